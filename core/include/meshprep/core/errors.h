@@ -1,0 +1,36 @@
+#pragma once
+/// \file errors.h
+/// The exception family thrown by every meshprep library. The library never prints and never
+/// exits; the CLI maps these to exit codes (InvalidInput/IoError -> 2, the others -> 1).
+
+#include <stdexcept>
+#include <string>
+
+namespace meshprep {
+
+/// Base of every meshprep exception.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The input (a file's content, a parameter, a mesh's structure) cannot be used.
+/// Messages name the file (when there is one) and the problem, on one line.
+class InvalidInput : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A file could not be opened, read or written (missing, permission, disk full).
+class IoError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// An algorithm could not do its work on valid input (e.g. a solver failed to converge).
+class SolverError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace meshprep

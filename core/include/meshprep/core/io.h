@@ -1,0 +1,78 @@
+#pragma once
+/// \file io.h
+/// Reading and writing surface meshes and point sets. The format follows the file extension
+/// (case-insensitive):
+///
+/// | format | read | write | notes |
+/// | --- | --- | --- | --- |
+/// | .off | yes | yes | polygons are fan-triangulated on read |
+/// | .obj | yes | yes | `v` and `f` records (v, v/t, v/t/n, v//n, negative indices); polygons triangulated |
+/// | .ply | yes | yes | ASCII, binary little and big endian; polygons triangulated |
+/// | .stl | yes | yes | ASCII and binary (also binary files whose header starts with "solid"); equal corners merged |
+/// | .xyz | points | no | `x y z` or `x y z nx ny nz` per line, `#` comments |
+///
+/// Every reader validates what it reads: NaN/Inf coordinates, out-of-range or negative indices,
+/// truncated files, element counts that do not match the data and empty files are rejected
+/// with an InvalidInput whose message names the file and the problem on one line.
+/// Writers are atomic: they write a temporary file beside the target and rename it, so an
+/// interrupted or failed run never leaves a half-written file.
+
+#include "meshprep/core/mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace meshprep {
+
+/// What a reader saw in the file, so that nothing is lost quietly.
+struct ReadReport {
+  std::string path;
+  std::string format;                   ///< "off", "obj", "ply-ascii", "ply-binary", "stl-ascii", "stl-binary"
+  std::size_t faces_in_file = 0;        ///< polygons in the file
+  std::size_t polygons_triangulated = 0;  ///< of those, polygons with more than 3 corners (fan-triangulated)
+  std::size_t triangles = 0;            ///< triangles after triangulation (soup.triangles.size())
+};
+
+/// Read a surface mesh as an indexed triangle soup.
+/// \throws InvalidInput on malformed content, unknown extension or an empty mesh; IoError if unreadable.
+TriangleSoup read_soup(const std::string& path, ReadReport* report = nullptr);
+
+/// A surface as read from a file: the soup as written, the halfedge mesh built from it,
+/// and the faces that could not be added to the halfedge mesh (non-manifold, see MeshBuildReport).
+struct LoadedMesh {
+  TriangleSoup soup;
+  TriMesh mesh;
+  ReadReport read;
+  MeshBuildReport build;
+};
+
+/// read_soup + mesh_from_soup.
+LoadedMesh load_mesh(const std::string& path);
+
+/// Options for writing a mesh.
+struct WriteOptions {
+  bool binary = false;  ///< PLY and STL: binary instead of ASCII
+};
+
+/// Write a halfedge mesh (format from the extension), atomically.
+/// \throws InvalidInput for an unknown extension; IoError if the file cannot be written.
+void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Write a soup (format from the extension), atomically.
+void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOptions& options = {});
+
+/// A point set, with normals when every line had six values.
+struct PointSet {
+  std::vector<Vec3> points;
+  std::vector<Vec3> normals;  ///< empty, or one per point
+};
+
+/// Read an XYZ point set.
+/// \throws InvalidInput on a malformed line (named by its number), NaN/Inf, a mix of 3- and
+/// 6-column lines, or no points; IoError if unreadable.
+PointSet read_points(const std::string& path);
+
+/// Lower-case extension without the dot ("off" for "a/B.OFF"); empty if none.
+std::string extension_of(const std::string& path);
+
+}  // namespace meshprep

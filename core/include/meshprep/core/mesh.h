@@ -1,0 +1,68 @@
+#pragma once
+/// \file mesh.h
+/// The mesh types shared by every module: an OpenMesh triangle mesh with double coordinates
+/// (for the processing stages) and a plain indexed triangle soup (exactly what a file holds,
+/// used by the quality module so that its topology checks see the file as written).
+
+// OpenMesh's VectorT leaves its coordinates uninitialized, so GCC 12 -O2 warns (maybe-uninitialized)
+// inside OpenMesh's property containers in every file that builds a mesh; not our code.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <OpenMesh/Core/Geometry/VectorT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products on Vec3
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace meshprep {
+
+/// OpenMesh traits: double-precision points and normals, face/vertex status for deletion.
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+  VertexAttributes(OpenMesh::Attributes::Status);
+  EdgeAttributes(OpenMesh::Attributes::Status);
+  HalfedgeAttributes(OpenMesh::Attributes::PrevHalfedge);
+  FaceAttributes(OpenMesh::Attributes::Status | OpenMesh::Attributes::Normal);
+};
+
+/// Halfedge triangle mesh used by the processing stages (simplify, smooth, enhance).
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
+
+using Vec3 = Eigen::Vector3d;
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// Indexed triangles exactly as read (no vertex merging, no dropped faces).
+/// Invariant: every index is < points.size().
+struct TriangleSoup {
+  std::vector<Vec3> points;
+  std::vector<Triangle> triangles;
+};
+
+/// The soup of a halfedge mesh (deleted elements skipped, vertices renumbered densely).
+TriangleSoup soup_from_mesh(const TriMesh& mesh);
+
+/// Result of building a halfedge mesh from a soup: the faces OpenMesh refused to add.
+struct MeshBuildReport {
+  /// Indices (into soup.triangles) of faces that could not be added because they would make an
+  /// edge or vertex non-manifold ("complex edge" in OpenMesh) or repeat a vertex. They are not in
+  /// the mesh; a caller must report them, never drop them silently.
+  std::vector<std::size_t> dropped_faces;
+};
+
+/// Build a halfedge mesh from a soup; faces OpenMesh cannot represent are listed in `report`.
+TriMesh mesh_from_soup(const TriangleSoup& soup, MeshBuildReport* report = nullptr);
+
+inline Vec3 to_eigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+inline OpenMesh::Vec3d to_openmesh(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+
+}  // namespace meshprep

@@ -1,0 +1,57 @@
+// Format dispatch by extension: read_soup, load_mesh, write_mesh, extension_of.
+#include "meshprep/core/io.h"
+
+#include "readers.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace meshprep {
+namespace {
+
+detail::SoupReader reader_for(const std::string& path, const std::string& extension) {
+  if (extension == "off") return &detail::read_off;
+  if (extension == "obj") return &detail::read_obj;
+  if (extension == "ply") return &detail::read_ply;
+  if (extension == "stl") return &detail::read_stl;
+  detail::fail(path, detail::unknown_extension_problem(extension));
+}
+
+}  // namespace
+
+std::string extension_of(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  if (!extension.empty()) extension.erase(0, 1);  // the dot
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+TriangleSoup read_soup(const std::string& path, ReadReport* report) {
+  const std::string extension = extension_of(path);
+  const detail::SoupReader reader = reader_for(path, extension);
+
+  const std::string data = detail::read_file(path);
+  if (data.empty()) detail::fail(path, "empty file");
+  ReadReport read;
+  read.path = path;
+  TriangleSoup soup = reader(path, data, read);
+  if (soup.triangles.empty()) detail::fail(path, "no faces");
+  read.triangles = soup.triangles.size();
+  if (report) *report = read;
+  return soup;
+}
+
+LoadedMesh load_mesh(const std::string& path) {
+  LoadedMesh loaded;
+  loaded.soup = read_soup(path, &loaded.read);
+  loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
+  return loaded;
+}
+
+void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions& options) {
+  write_soup(soup_from_mesh(mesh), path, options);
+}
+
+}  // namespace meshprep

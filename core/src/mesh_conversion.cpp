@@ -1,0 +1,81 @@
+// Conversions between the halfedge mesh and the indexed triangle soup.
+#include "meshprep/core/mesh.h"
+
+#include "meshprep/core/errors.h"
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <limits>
+
+namespace meshprep {
+namespace {
+
+// Silences OpenMesh's error stream (add_face reports "complex edge" there) while alive.
+class SilencedOmerr {
+ public:
+  SilencedOmerr() : was_enabled_(omerr().is_enabled()) { omerr().disable(); }
+  ~SilencedOmerr() {
+    if (was_enabled_) omerr().enable();
+  }
+  SilencedOmerr(const SilencedOmerr&) = delete;
+  SilencedOmerr& operator=(const SilencedOmerr&) = delete;
+
+ private:
+  bool was_enabled_;
+};
+
+}  // namespace
+
+TriangleSoup soup_from_mesh(const TriMesh& mesh) {
+  constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
+  TriangleSoup soup;
+  std::vector<std::uint32_t> new_index(mesh.n_vertices(), unused);
+  soup.points.reserve(mesh.n_vertices());
+  for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+    const TriMesh::VertexHandle vh(static_cast<int>(v));
+    if (mesh.has_vertex_status() && mesh.status(vh).deleted()) continue;
+    new_index[v] = static_cast<std::uint32_t>(soup.points.size());
+    soup.points.push_back(to_eigen(mesh.point(vh)));
+  }
+  soup.triangles.reserve(mesh.n_faces());
+  for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+    const TriMesh::FaceHandle fh(static_cast<int>(f));
+    if (mesh.has_face_status() && mesh.status(fh).deleted()) continue;
+    TriMesh::HalfedgeHandle he = mesh.halfedge_handle(fh);
+    Triangle triangle{};
+    for (std::uint32_t& corner : triangle) {
+      corner = new_index[mesh.to_vertex_handle(he).idx()];
+      if (corner == unused) throw Error("soup_from_mesh: a face uses a deleted vertex");
+      he = mesh.next_halfedge_handle(he);
+    }
+    soup.triangles.push_back(triangle);
+  }
+  return soup;
+}
+
+TriMesh mesh_from_soup(const TriangleSoup& soup, MeshBuildReport* report) {
+  TriMesh mesh;
+  mesh.reserve(soup.points.size(), soup.triangles.size() * 3 / 2, soup.triangles.size());
+  std::vector<TriMesh::VertexHandle> vertices;
+  vertices.reserve(soup.points.size());
+  for (const Vec3& p : soup.points) vertices.push_back(mesh.add_vertex(to_openmesh(p)));
+
+  if (report) report->dropped_faces.clear();
+  const SilencedOmerr silenced;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (const std::uint32_t index : t) {
+      if (index >= vertices.size()) {
+        throw InvalidInput("mesh_from_soup: triangle " + std::to_string(f) + " uses vertex " + std::to_string(index) +
+                           " of " + std::to_string(vertices.size()));
+      }
+    }
+    // OpenMesh asserts (or corrupts the mesh) on a repeated vertex, so such faces never reach it.
+    const bool repeats = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    const bool added = !repeats && mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]).is_valid();
+    if (!added && report) report->dropped_faces.push_back(f);
+  }
+  return mesh;
+}
+
+}  // namespace meshprep

@@ -1,0 +1,50 @@
+#pragma once
+/// \file readers.h
+/// The per-format soup readers behind read_soup, and the helpers they share.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "meshprep/core/io.h"
+
+namespace meshprep::detail {
+
+/// A format reader: parses `data` (the whole content of `path`, not empty) into a soup, sets
+/// report.format and counts faces in `report` (through add_polygon). Throws InvalidInput.
+using SoupReader = TriangleSoup (*)(const std::string& path, std::string_view data, ReadReport& report);
+
+TriangleSoup read_off(const std::string& path, std::string_view data, ReadReport& report);
+TriangleSoup read_obj(const std::string& path, std::string_view data, ReadReport& report);
+TriangleSoup read_ply(const std::string& path, std::string_view data, ReadReport& report);
+TriangleSoup read_stl(const std::string& path, std::string_view data, ReadReport& report);
+
+/// The whole content of a file. \throws IoError "<path>: cannot open: <reason>" (or "cannot read").
+std::string read_file(const std::string& path);
+
+/// Throws InvalidInput with the one-line message "<path>: <problem>".
+[[noreturn]] void fail(const std::string& path, const std::string& problem);
+
+/// The problem with a mesh path whose extension is not off, obj, ply or stl (for readers and writers).
+std::string unknown_extension_problem(const std::string& extension);
+
+/// "line <n>: ", the prefix of problems found on a text line.
+std::string at_line(std::size_t line);
+
+/// Whether all three coordinates are finite.
+bool is_finite(const Vec3& p);
+
+/// The first non-finite coordinate of `p` as text ("nan", "inf" or "-inf").
+std::string non_finite_text(const Vec3& p);
+
+/// How many of `announced` items to reserve memory for when each takes at least
+/// `min_bytes_each` of the `bytes` left in the file: a lying header cannot make us allocate more
+/// than the file could hold.
+std::size_t capped_count(std::uint64_t announced, std::size_t bytes, std::size_t min_bytes_each);
+
+/// Appends a polygon (at least 3 valid corners) to the soup, fan-triangulated around its first
+/// corner, and counts it in report.faces_in_file and report.polygons_triangulated.
+void add_polygon(TriangleSoup& soup, const std::vector<std::uint32_t>& corners, ReadReport& report);
+
+}  // namespace meshprep::detail

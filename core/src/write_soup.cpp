@@ -1,0 +1,192 @@
+// Soup writers: OFF, OBJ, PLY (ASCII or binary little endian, double coordinates) and STL (ASCII or
+// binary float32 with facet normals). Text coordinates are written with std::to_chars, the
+// shortest text that reads back to the identical double.
+#include "meshprep/core/io.h"
+
+#include "meshprep/core/atomic_file.h"
+#include "byte_order.h"
+#include "readers.h"
+
+#include <Eigen/Geometry>
+
+#include <charconv>
+#include <limits>
+#include <ostream>
+
+namespace meshprep {
+namespace {
+
+// Collects output in memory and hands it to the stream in large blocks.
+class OutputBuffer {
+ public:
+  explicit OutputBuffer(std::ostream& out) : out_(out) { buffer_.reserve(flush_size + 4096); }
+
+  OutputBuffer& operator<<(std::string_view text) {
+    buffer_ += text;
+    return maybe_flush();
+  }
+  OutputBuffer& operator<<(double value) { return append_chars(value); }
+  OutputBuffer& operator<<(std::size_t value) { return append_chars(value); }
+  OutputBuffer& operator<<(std::uint32_t value) { return append_chars(value); }
+
+  template <class T>
+  void binary(T value) {
+    detail::append_little_endian(buffer_, value);
+    maybe_flush();
+  }
+
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr std::size_t flush_size = std::size_t{1} << 20;
+
+  template <class T>
+  OutputBuffer& append_chars(T value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    buffer_.append(text, result.ptr);
+    return maybe_flush();
+  }
+  OutputBuffer& maybe_flush() {
+    if (buffer_.size() >= flush_size) flush();
+    return *this;
+  }
+
+  std::ostream& out_;
+  std::string buffer_;
+};
+
+void write_point(OutputBuffer& out, const Vec3& p) { out << p.x() << " " << p.y() << " " << p.z(); }
+
+Vec3 unit_normal(const TriangleSoup& soup, const Triangle& t) {
+  const Vec3 normal = (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]);
+  const double length = normal.norm();
+  return length > 0.0 ? Vec3(normal / length) : Vec3::Zero();
+}
+
+void write_off(const TriangleSoup& soup, OutputBuffer& out) {
+  out << "OFF\n" << soup.points.size() << " " << soup.triangles.size() << " 0\n";
+  for (const Vec3& p : soup.points) {
+    write_point(out, p);
+    out << "\n";
+  }
+  for (const Triangle& t : soup.triangles) out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+}
+
+void write_obj(const TriangleSoup& soup, OutputBuffer& out) {
+  for (const Vec3& p : soup.points) {
+    out << "v ";
+    write_point(out, p);
+    out << "\n";
+  }
+  for (const Triangle& t : soup.triangles) out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+}
+
+void write_ply(const TriangleSoup& soup, OutputBuffer& out, bool binary) {
+  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment written by meshprep\n"
+      << "element vertex " << soup.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
+      << "element face " << soup.triangles.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
+  for (const Vec3& p : soup.points) {
+    if (binary) {
+      for (int k = 0; k < 3; ++k) out.binary(p[k]);
+    } else {
+      write_point(out, p);
+      out << "\n";
+    }
+  }
+  for (const Triangle& t : soup.triangles) {
+    if (binary) {
+      out.binary(std::uint8_t{3});
+      for (const std::uint32_t index : t) out.binary(index);
+    } else {
+      out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    }
+  }
+}
+
+void write_stl_ascii(const TriangleSoup& soup, OutputBuffer& out) {
+  out << "solid meshprep\n";
+  for (const Triangle& t : soup.triangles) {
+    out << "  facet normal ";
+    write_point(out, unit_normal(soup, t));
+    out << "\n    outer loop\n";
+    for (const std::uint32_t index : t) {
+      out << "      vertex ";
+      write_point(out, soup.points[index]);
+      out << "\n";
+    }
+    out << "    endloop\n  endfacet\n";
+  }
+  out << "endsolid meshprep\n";
+}
+
+void write_stl_binary(const TriangleSoup& soup, OutputBuffer& out) {
+  // The header must not start with "solid", or some readers would take the file for ASCII.
+  std::string header = "binary STL written by meshprep";
+  header.resize(80, ' ');
+  out << header;
+  out.binary(static_cast<std::uint32_t>(soup.triangles.size()));
+  const auto write_floats = [&out](const Vec3& v) {
+    for (int k = 0; k < 3; ++k) out.binary(static_cast<float>(v[k]));
+  };
+  for (const Triangle& t : soup.triangles) {
+    write_floats(unit_normal(soup, t));
+    for (const std::uint32_t index : t) write_floats(soup.points[index]);
+    out.binary(std::uint16_t{0});
+  }
+}
+
+// The soup invariant, and what the formats can hold; checked before anything is written.
+void check_writable(const TriangleSoup& soup, const std::string& path) {
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    if (!detail::is_finite(soup.points[i])) {
+      detail::fail(path, "cannot write point " + std::to_string(i) + ": non-finite coordinate (" +
+                             detail::non_finite_text(soup.points[i]) + ")");
+    }
+  }
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    for (const std::uint32_t index : soup.triangles[f]) {
+      if (index >= soup.points.size()) {
+        detail::fail(path, "cannot write triangle " + std::to_string(f) + ": vertex index " + std::to_string(index) +
+                               " out of range (" + std::to_string(soup.points.size()) + " points)");
+      }
+    }
+  }
+  if (soup.triangles.size() > std::numeric_limits<std::uint32_t>::max()) {
+    detail::fail(path, "too many triangles for the file format");
+  }
+}
+
+}  // namespace
+
+void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOptions& options) {
+  const std::string extension = extension_of(path);
+  if (extension != "off" && extension != "obj" && extension != "ply" && extension != "stl") {
+    detail::fail(path, detail::unknown_extension_problem(extension));
+  }
+  check_writable(soup, path);
+  const bool binary = options.binary && (extension == "ply" || extension == "stl");
+  write_file_atomically(
+      path,
+      [&](std::ostream& stream) {
+        OutputBuffer out(stream);
+        if (extension == "off") {
+          write_off(soup, out);
+        } else if (extension == "obj") {
+          write_obj(soup, out);
+        } else if (extension == "ply") {
+          write_ply(soup, out, binary);
+        } else if (binary) {
+          write_stl_binary(soup, out);
+        } else {
+          write_stl_ascii(soup, out);
+        }
+        out.flush();
+      },
+      binary);
+}
+
+}  // namespace meshprep

@@ -1,0 +1,562 @@
+// Readers, writers, mesh conversion and atomic writes of meshprep::core.
+#include "meshprep/core/atomic_file.h"
+#include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace meshprep {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each test gets a fresh, empty directory that is removed afterwards.
+class IoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static int counter = 0;
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("meshprep-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Writes `content` (text or bytes) to a file in the test directory and returns its path.
+  std::string file(const std::string& name, const std::string& content) const {
+    std::ofstream out(path(name), std::ios::binary);
+    out << content;
+    return path(name);
+  }
+
+  std::vector<std::string> directory_entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+    return names;
+  }
+
+  fs::path dir_;
+};
+
+// A tetrahedron with coordinates that are not exact in binary or in float.
+TriangleSoup tetrahedron() {
+  TriangleSoup soup;
+  soup.points = {{0.1, 0.2, 0.3}, {1.0 / 3.0, 0.0, -2.5e-7}, {0.0, 1.7, 1e5}, {-3.25, 0.5, 0.7}};
+  soup.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return soup;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The message of the InvalidInput thrown by `read` (empty if none was thrown).
+template <class Read>
+std::string invalid_input_message(Read read) {
+  try {
+    read();
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+  return {};
+}
+
+// Expects read_soup(path) to throw an InvalidInput whose one-line message names the file and
+// contains `problem`.
+void expect_invalid(const std::string& path, const std::string& problem) {
+  const std::string message = invalid_input_message([&] { read_soup(path); });
+  ASSERT_FALSE(message.empty()) << path << " was accepted";
+  EXPECT_NE(message.find(fs::path(path).filename().string()), std::string::npos) << message;
+  EXPECT_NE(message.find(problem), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+// Little-endian or big-endian bytes of a value.
+template <class T>
+std::string bytes_of(T value, bool big_endian = false) {
+  std::string bytes(sizeof(T), '\0');
+  std::memcpy(bytes.data(), &value, sizeof(T));
+  if (big_endian) std::reverse(bytes.begin(), bytes.end());
+  return bytes;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Round trips
+
+struct FormatCase {
+  const char* extension;
+  bool binary;
+  const char* format;
+};
+
+class RoundTrip : public IoTest, public ::testing::WithParamInterface<FormatCase> {};
+
+TEST_P(RoundTrip, PreservesTrianglesAndCoordinates) {
+  const FormatCase c = GetParam();
+  const TriangleSoup soup = tetrahedron();
+  const std::string target = path(std::string("mesh.") + c.extension);
+  write_soup(soup, target, WriteOptions{c.binary});
+
+  ReadReport report;
+  const TriangleSoup back = read_soup(target, &report);
+  EXPECT_EQ(report.format, c.format);
+  EXPECT_EQ(report.path, target);
+  EXPECT_EQ(report.faces_in_file, soup.triangles.size());
+  EXPECT_EQ(report.triangles, soup.triangles.size());
+  EXPECT_EQ(report.polygons_triangulated, 0u);
+  ASSERT_EQ(back.triangles.size(), soup.triangles.size());
+  ASSERT_EQ(back.points.size(), soup.points.size());
+  const bool is_binary_stl = std::string(c.extension) == "stl" && c.binary;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& expected = soup.points[soup.triangles[f][k]];
+      const Vec3& actual = back.points[back.triangles[f][k]];
+      for (int d = 0; d < 3; ++d) {
+        // Binary STL stores float32; the others (ASCII STL too) are written with full precision.
+        const double expected_d = is_binary_stl ? static_cast<float>(expected[d]) : expected[d];
+        EXPECT_EQ(actual[d], expected_d) << "face " << f << " corner " << k;
+      }
+    }
+  }
+  EXPECT_EQ(directory_entries().size(), 1u) << "temporary files left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(AllFormats, RoundTrip,
+                         ::testing::Values(FormatCase{"off", false, "off"}, FormatCase{"obj", false, "obj"},
+                                           FormatCase{"ply", false, "ply-ascii"}, FormatCase{"ply", true, "ply-binary"},
+                                           FormatCase{"stl", false, "stl-ascii"},
+                                           FormatCase{"stl", true, "stl-binary"}),
+                         [](const auto& test_info) {
+                           return std::string(test_info.param.extension) +
+                                  (test_info.param.binary ? "_binary" : "_ascii");
+                         });
+
+TEST_F(IoTest, WriteMeshAndLoadMeshRoundTrip) {
+  const TriMesh mesh = mesh_from_soup(tetrahedron());
+  write_mesh(mesh, path("tet.OFF"));
+  const LoadedMesh loaded = load_mesh(path("tet.OFF"));
+  EXPECT_EQ(loaded.soup.triangles.size(), 4u);
+  EXPECT_EQ(loaded.mesh.n_faces(), 4u);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 4u);
+  EXPECT_TRUE(loaded.build.dropped_faces.empty());
+  EXPECT_EQ(loaded.read.format, "off");
+  EXPECT_EQ(loaded.soup.points[1], tetrahedron().points[1]);
+}
+
+TEST_F(IoTest, WriterRejectsUnknownExtensionAndBadSoup) {
+  EXPECT_THROW(write_soup(tetrahedron(), path("mesh.vtk")), InvalidInput);
+  EXPECT_THROW(write_soup(tetrahedron(), path("mesh")), InvalidInput);
+  TriangleSoup bad = tetrahedron();
+  bad.triangles.push_back({0, 1, 4});
+  EXPECT_THROW(write_soup(bad, path("bad.off")), InvalidInput);
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+TEST_F(IoTest, BinaryStlIsSmallAndHasNormals) {
+  write_soup(tetrahedron(), path("t.stl"), WriteOptions{true});
+  const std::string bytes = read_text(path("t.stl"));
+  ASSERT_EQ(bytes.size(), 84u + 50u * 4u);
+  EXPECT_NE(bytes.compare(0, 5, "solid"), 0);
+  float normal[3];
+  std::memcpy(normal, bytes.data() + 84, sizeof normal);
+  EXPECT_NEAR(std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]), 1.0, 1e-6);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Polygons and format variants
+
+TEST_F(IoTest, QuadIsTriangulatedInEveryPolygonFormat) {
+  const std::string files[] = {
+      file("quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"),
+      file("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"),
+      file("quad.ply",
+           "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+           "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"),
+  };
+  for (const std::string& quad : files) {
+    ReadReport report;
+    const TriangleSoup soup = read_soup(quad, &report);
+    ASSERT_EQ(soup.triangles.size(), 2u) << quad;
+    EXPECT_EQ(report.faces_in_file, 1u);
+    EXPECT_EQ(report.polygons_triangulated, 1u);
+    EXPECT_EQ(report.triangles, 2u);
+    EXPECT_EQ(soup.triangles[0], (Triangle{0, 1, 2}));
+    EXPECT_EQ(soup.triangles[1], (Triangle{0, 2, 3}));
+  }
+}
+
+TEST_F(IoTest, OffWithCommentsColoursAndCountsOnHeaderLine) {
+  const TriangleSoup soup = read_soup(file("c.off",
+                                           "# a comment\nCOFF 3 1 0  # counts here\n\n"
+                                           "0 0 0 255 0 0 255\n1 0 0 0 255 0 255 # red\n0 1 0 0 0 255 255\n"
+                                           "3 0 1 2 0.5 0.5 0.5\n"));
+  ASSERT_EQ(soup.points.size(), 3u);
+  EXPECT_EQ(soup.points[1], Vec3(1, 0, 0));
+  EXPECT_EQ(soup.triangles.size(), 1u);
+}
+
+TEST_F(IoTest, ObjCornerFormsNegativeIndicesAndIgnoredRecords) {
+  const std::string obj = file("n.obj",
+                               "# exported\nmtllib a.mtl\no thing\ng group\ns off\nusemtl red\n"
+                               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0 1.0\n"
+                               "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n"
+                               "f 1/1/1 2/2/1 3/3/1\n"
+                               "f -4//1 -2//1 -1//1\n"
+                               "f 1/1 3/3 4/2\n"
+                               "l 1 2\n");
+  ReadReport report;
+  const TriangleSoup soup = read_soup(obj, &report);
+  ASSERT_EQ(soup.triangles.size(), 3u);
+  EXPECT_EQ(soup.triangles[0], (Triangle{0, 1, 2}));
+  EXPECT_EQ(soup.triangles[1], (Triangle{0, 2, 3}));
+  EXPECT_EQ(soup.triangles[2], (Triangle{0, 2, 3}));
+  EXPECT_EQ(report.faces_in_file, 3u);
+}
+
+TEST_F(IoTest, PlyAsciiWithExtraPropertiesAndElements) {
+  const std::string ply = file("extra.ply",
+                               "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\n"
+                               "element vertex 3\r\nproperty float nx\r\nproperty double x\r\nproperty float ny\r\n"
+                               "property double y\r\nproperty double z\r\nproperty uchar red\r\n"
+                               "property list uchar float weights\r\n"
+                               "element face 1\r\nproperty uchar flags\r\nproperty list uchar uint vertex_index\r\n"
+                               "element edge 2\r\nproperty int vertex1\r\nproperty int vertex2\r\nend_header\r\n"
+                               "0 0.5 0 1 -2 255 2 0.1 0.2\r\n1 1.5 0 2 -3 0 0\r\n0 2.5 1 3 -4 7 1 0\r\n"
+                               "9 3 0 1 2\r\n0 1\r\n1 2\r\n");
+  ReadReport report;
+  const TriangleSoup soup = read_soup(ply, &report);
+  EXPECT_EQ(report.format, "ply-ascii");
+  ASSERT_EQ(soup.points.size(), 3u);
+  EXPECT_EQ(soup.points[0], Vec3(0.5, 1, -2));
+  EXPECT_EQ(soup.points[2], Vec3(2.5, 3, -4));
+  EXPECT_EQ(soup.triangles, (std::vector<Triangle>{{0, 1, 2}}));
+}
+
+// A binary PLY: vertex with int16 x, float y, double z and extra properties, face with an int
+// count and ushort indices, preceded by an unrelated element.
+std::string binary_ply(bool big_endian, int vertices_announced) {
+  const std::string format = big_endian ? "binary_big_endian" : "binary_little_endian";
+  std::string data = "ply\nformat " + format + " 1.0\n" +
+                     "element material 1\nproperty list uchar char name\n"
+                     "element vertex " +
+                     std::to_string(vertices_announced) + "\n" +
+                     "property short x\nproperty float y\nproperty uchar red\nproperty double z\n"
+                     "element face 2\nproperty list int ushort vertex_indices\nproperty float quality\nend_header\n";
+  data += bytes_of<std::uint8_t>(2) + "ab";
+  const double z[4] = {0.25, -1.5, 3.125, 1e-3};
+  for (int v = 0; v < 4; ++v) {
+    data += bytes_of<std::int16_t>(static_cast<std::int16_t>(v - 1), big_endian) +
+            bytes_of<float>(static_cast<float>(v) * 0.5f, big_endian) + bytes_of<std::uint8_t>(200) +
+            bytes_of<double>(z[v], big_endian);
+  }
+  data += bytes_of<std::int32_t>(3, big_endian) + bytes_of<std::uint16_t>(0, big_endian) +
+          bytes_of<std::uint16_t>(1, big_endian) + bytes_of<std::uint16_t>(2, big_endian) +
+          bytes_of<float>(1.f, big_endian);
+  data += bytes_of<std::int32_t>(4, big_endian);
+  for (std::uint16_t i : {0, 2, 3, 1}) data += bytes_of<std::uint16_t>(i, big_endian);
+  data += bytes_of<float>(0.5f, big_endian);
+  return data;
+}
+
+TEST_F(IoTest, PlyBinaryBothByteOrders) {
+  for (const bool big_endian : {false, true}) {
+    ReadReport report;
+    const TriangleSoup soup = read_soup(file("b.ply", binary_ply(big_endian, 4)), &report);
+    EXPECT_EQ(report.format, "ply-binary");
+    ASSERT_EQ(soup.points.size(), 4u) << big_endian;
+    EXPECT_EQ(soup.points[0], Vec3(-1, 0, 0.25));
+    EXPECT_EQ(soup.points[3], Vec3(2, 1.5, 1e-3));
+    EXPECT_EQ(soup.triangles, (std::vector<Triangle>{{0, 1, 2}, {0, 2, 3}, {0, 3, 1}}));
+    EXPECT_EQ(report.faces_in_file, 2u);
+    EXPECT_EQ(report.polygons_triangulated, 1u);
+  }
+}
+
+TEST_F(IoTest, PlyLyingElementCountIsRejected) {
+  expect_invalid(file("more.ply", binary_ply(false, 40)), "truncated: header announces 40 vertices");
+  expect_invalid(file("fewer.ply", binary_ply(true, 3)), ".ply");
+  expect_invalid(
+      file("ascii.ply",
+           "ply\nformat ascii 1.0\nelement vertex 100\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+      "truncated");
+  // Absurd counts are refused without allocating for them.
+  expect_invalid(file("huge.ply",
+                      "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
+                      "property float y\nproperty float z\nend_header\n" +
+                          std::string(24, '\0')),
+                 "truncated: header announces 2000000000 vertices, data has 2");
+}
+
+TEST_F(IoTest, PlyHeaderErrors) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n";
+  expect_invalid(file("noz.ply", header + "element face 0\nproperty list uchar int vertex_indices\nend_header\n"),
+                 "'z'");
+  expect_invalid(file("type.ply", header + "property float128 z\nend_header\n"), "float128");
+  expect_invalid(file("noend.ply", header + "property float z\n"), "end_header");
+  expect_invalid(file("magic.ply", "plyx\n"), "not a PLY file");
+}
+
+TEST_F(IoTest, BinaryStlWhoseHeaderStartsWithSolid) {
+  std::string data = "solid but actually binary";
+  data.resize(80, ' ');
+  data += bytes_of<std::uint32_t>(2);
+  const float corners[2][3][3] = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+  for (const auto& triangle : corners) {
+    data += std::string(12, '\0');  // normal
+    for (const auto& corner : triangle) {
+      for (const float c : corner) data += bytes_of(c);
+    }
+    data += bytes_of<std::uint16_t>(0);
+  }
+  ReadReport report;
+  const TriangleSoup soup = read_soup(file("solid.stl", data), &report);
+  EXPECT_EQ(report.format, "stl-binary");
+  EXPECT_EQ(soup.triangles.size(), 2u);
+  EXPECT_EQ(soup.points.size(), 4u) << "equal corners are merged";
+  EXPECT_EQ(soup.triangles[1], (Triangle{1, 3, 2}));
+
+  expect_invalid(file("cut.stl", data.substr(0, data.size() - 1)), "truncated binary STL");
+}
+
+TEST_F(IoTest, AsciiStlMergesCornersAndChecksSyntax) {
+  const std::string facet =
+      "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+  const TriangleSoup soup = read_soup(file("a.stl", "solid x\n" + facet + facet + "endsolid x\n"));
+  EXPECT_EQ(soup.points.size(), 3u);
+  EXPECT_EQ(soup.triangles.size(), 2u);
+  expect_invalid(file("noend.stl", "solid x\n" + facet), "endsolid");
+  expect_invalid(file("bad.stl", "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0\n endloop\n"),
+                 "is not a number");
+  expect_invalid(file("nan.stl",
+                      "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 nan\n"
+                      "  vertex 0 1 0\n endloop\nendfacet\nendsolid\n"),
+                 "non-finite");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Validation
+
+TEST_F(IoTest, TruncatedOff) {
+  expect_invalid(file("bunny.off", "OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+                 "truncated: header announces 3 faces, found 1");
+  expect_invalid(file("v.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n"), "truncated: header announces 5 vertices, found 2");
+  expect_invalid(file("h.off", "OFF\n"), "truncated");
+}
+
+TEST_F(IoTest, NonFiniteCoordinates) {
+  expect_invalid(file("x.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
+                 "vertex 1 has a non-finite coordinate (nan)");
+  expect_invalid(file("x.obj", "v 0 0 0\nv 1 0 inf\nv 0 1 0\nf 1 2 3\n"), "non-finite");
+  expect_invalid(file("x.ply",
+                      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                      "property float z\nend_header\n0 0 0\n1e999 0 0\n0 1 0\n"),
+                 "non-finite");
+}
+
+TEST_F(IoTest, IndexOutOfRange) {
+  expect_invalid(file("x.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), "out of range");
+  const std::string message =
+      invalid_input_message([&] { read_soup(file("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")); });
+  EXPECT_NE(message.find("line 4: face index 4 out of range (3 vertices)"), std::string::npos) << message;
+  expect_invalid(file("neg.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n"), "out of range");
+  expect_invalid(file("x.ply",
+                      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+                 "out of range");
+}
+
+TEST_F(IoTest, MalformedFaces) {
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  expect_invalid(file("two.off", "OFF\n3 1 0\n" + vertices + "2 0 1\n"), "at least 3");
+  expect_invalid(file("neg.off", "OFF\n3 1 0\n" + vertices + "3 0 -1 2\n"), "negative");
+  expect_invalid(file("short.off", "OFF\n3 1 0\n" + vertices + "4 0 1 2\n"), "announces 4 corners");
+  expect_invalid(file("garbage.off", "OFF\n3 1 0\n" + vertices + "3 0 1 x2\n"), "'x2'");
+  expect_invalid(file("garbage2.off", "OFF\n3 1 0\n0 0 0\n1 0abc 0\n0 1 0\n3 0 1 2\n"), "'0abc'");
+  expect_invalid(file("extra.off", "OFF\n3 1 0\n" + vertices + "3 0 1 2\n3 0 1 2\n"), "unexpected content");
+  expect_invalid(file("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), "at least 3");
+  expect_invalid(file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), "index 0");
+  expect_invalid(file("slash.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/ 2 3\n"), "'1/'");
+  expect_invalid(file("curve.obj", "v 0 0 0\ncurv 0 1 1 2\n"), "unsupported record 'curv'");
+  expect_invalid(file("neg.ply",
+                      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                          vertices + "3 0 -1 2\n"),
+                 "negative");
+}
+
+TEST_F(IoTest, EmptyFilesAndMeshesWithoutFaces) {
+  expect_invalid(file("empty.off", ""), "empty file");
+  expect_invalid(file("empty.stl", ""), "empty file");
+  expect_invalid(file("comments.off", "# nothing\n\n"), "empty file");
+  expect_invalid(file("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"), "no faces");
+  expect_invalid(file("nofaces.obj", "v 0 0 0\n"), "no faces");
+}
+
+TEST_F(IoTest, UnknownExtensionAndMissingFile) {
+  expect_invalid(file("mesh.vtk", "whatever"), "supported: .off, .obj, .ply, .stl");
+  expect_invalid(file("noextension", "OFF\n"), "supported");
+  try {
+    read_soup(path("missing.off"));
+    FAIL() << "no exception";
+  } catch (const IoError& error) {
+    EXPECT_EQ(std::string(error.what()), path("missing.off") + ": cannot open: No such file or directory");
+  }
+  EXPECT_THROW(read_points(path("missing.xyz")), IoError);
+}
+
+TEST_F(IoTest, ExtensionOf) {
+  EXPECT_EQ(extension_of("a/B.OFF"), "off");
+  EXPECT_EQ(extension_of("dir.d/file"), "");
+  EXPECT_EQ(extension_of("x.tar.PLY"), "ply");
+}
+
+// ---------------------------------------------------------------------------------------------
+// XYZ points
+
+TEST_F(IoTest, XyzThreeAndSixColumns) {
+  const PointSet three = read_points(file("p.xyz", "# header\n0 0 0\n\n1.5 -2 3e2  # trailing comment\n"));
+  ASSERT_EQ(three.points.size(), 2u);
+  EXPECT_EQ(three.points[1], Vec3(1.5, -2, 300));
+  EXPECT_TRUE(three.normals.empty());
+
+  const PointSet six = read_points(file("n.xyz", "0 0 0 0 0 1\n1 1 1 0 1 0\n"));
+  ASSERT_EQ(six.points.size(), 2u);
+  ASSERT_EQ(six.normals.size(), 2u);
+  EXPECT_EQ(six.normals[1], Vec3(0, 1, 0));
+}
+
+TEST_F(IoTest, XyzErrorsNameTheLine) {
+  const auto message = [&](const std::string& name, const std::string& content) {
+    return invalid_input_message([&] { read_points(file(name, content)); });
+  };
+  EXPECT_NE(message("four.xyz", "0 0 0\n# c\n1 2 3 4\n").find("four.xyz: line 3: 4 values"), std::string::npos);
+  EXPECT_NE(message("mixed.xyz", "0 0 0\n1 1 1 0 0 1\n").find("line 2"), std::string::npos);
+  EXPECT_NE(message("nan.xyz", "0 0 0\n1 nan 0\n").find("line 2: non-finite"), std::string::npos);
+  EXPECT_NE(message("word.xyz", "0 0 0\n1 a 0\n").find("line 2: 'a' is not a number"), std::string::npos);
+  EXPECT_NE(message("none.xyz", "# only a comment\n").find("no points"), std::string::npos);
+  EXPECT_NE(message("empty.xyz", "").find("empty"), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mesh conversion
+
+TEST_F(IoTest, NonManifoldFinFaceIsDroppedAndReported) {
+  TriangleSoup fin;
+  fin.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {5, 5, 5}};
+  fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};  // three faces on the edge 0-1
+  MeshBuildReport report;
+  const TriMesh mesh = mesh_from_soup(fin, &report);
+  EXPECT_EQ(report.dropped_faces, (std::vector<std::size_t>{2}));
+  EXPECT_EQ(mesh.n_faces(), 2u);
+  EXPECT_EQ(mesh.n_vertices(), 6u) << "unreferenced soup points are kept";
+  EXPECT_EQ(to_eigen(mesh.point(TriMesh::VertexHandle(5))), Vec3(5, 5, 5));
+}
+
+TEST_F(IoTest, RepeatedIndexFaceIsDropped) {
+  TriangleSoup soup = tetrahedron();
+  soup.triangles.push_back({1, 1, 2});
+  MeshBuildReport report;
+  const TriMesh mesh = mesh_from_soup(soup, &report);
+  EXPECT_EQ(report.dropped_faces, (std::vector<std::size_t>{4}));
+  EXPECT_EQ(mesh.n_faces(), 4u);
+}
+
+TEST_F(IoTest, SoupFromMeshSkipsDeletedElements) {
+  TriMesh mesh = mesh_from_soup(tetrahedron());
+  mesh.delete_vertex(TriMesh::VertexHandle(3));  // removes the three faces around it
+  const TriangleSoup soup = soup_from_mesh(mesh);
+  ASSERT_EQ(soup.points.size(), 3u);
+  ASSERT_EQ(soup.triangles.size(), 1u);
+  const Triangle t = soup.triangles[0];
+  EXPECT_TRUE(t == (Triangle{0, 2, 1}) || t == (Triangle{2, 1, 0}) || t == (Triangle{1, 0, 2})) << t[0] << t[1] << t[2];
+  EXPECT_EQ(soup.points[2], tetrahedron().points[2]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Atomic writes
+
+TEST_F(IoTest, FailingWriterLeavesNothingBehind) {
+  const std::string target = path("out.off");
+  EXPECT_THROW(write_file_atomically(target,
+                                     [](std::ostream& out) {
+                                       out << "partial";
+                                       throw std::runtime_error("writer failed");
+                                     }),
+               std::runtime_error);
+  EXPECT_TRUE(directory_entries().empty());
+
+  file("out.off", "old content");
+  EXPECT_THROW(write_file_atomically(target,
+                                     [](std::ostream& out) {
+                                       out << "new";
+                                       throw std::runtime_error("writer failed");
+                                     }),
+               std::runtime_error);
+  EXPECT_EQ(read_text(target), "old content");
+  EXPECT_EQ(directory_entries(), (std::vector<std::string>{"out.off"}));
+
+  write_file_atomically(target, [](std::ostream& out) { out << "new content"; });
+  EXPECT_EQ(read_text(target), "new content");
+  EXPECT_EQ(directory_entries().size(), 1u);
+}
+
+TEST_F(IoTest, StreamFailureBecomesIoError) {
+  const std::string target = path("s.off");
+  EXPECT_THROW(write_file_atomically(target, [](std::ostream& out) { out.setstate(std::ios::badbit); }), IoError);
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+TEST_F(IoTest, WritePathAtomicallyUsesTemporaryWithSameExtension) {
+  const std::string target = path("mesh.ply");
+  std::string seen;
+  write_path_atomically(target, [&](const std::string& temporary) {
+    seen = temporary;
+    std::ofstream(temporary) << "data";
+  });
+  EXPECT_EQ(fs::path(seen).parent_path(), dir_);
+  EXPECT_EQ(fs::path(seen).extension(), ".ply");
+  EXPECT_EQ(fs::path(seen).filename().string().rfind(".mesh.ply.tmp-", 0), 0u) << seen;
+  EXPECT_EQ(read_text(target), "data");
+  EXPECT_THROW(write_path_atomically(target,
+                                     [](const std::string& temporary) {
+                                       std::ofstream(temporary) << "partial";
+                                       throw std::runtime_error("third party failed");
+                                     }),
+               std::runtime_error);
+  EXPECT_EQ(read_text(target), "data");
+  EXPECT_EQ(directory_entries().size(), 1u);
+}
+
+TEST_F(IoTest, WritingIntoMissingDirectoryNamesThePath) {
+  const std::string target = path("no/such/dir/out.off");
+  try {
+    write_soup(tetrahedron(), target);
+    FAIL() << "no exception";
+  } catch (const IoError& error) {
+    EXPECT_NE(std::string(error.what()).find(target + ": cannot write"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace meshprep
