@@ -1,0 +1,57 @@
+#pragma once
+/// \file triangle_bvh.h
+/// A bounding-volume hierarchy (axis-aligned boxes, median split) over the triangles of a soup,
+/// for closest-point queries and overlap searches.
+
+#include "meshprep/core/mesh.h"
+
+#include <Eigen/Geometry>
+
+#include <functional>
+#include <vector>
+
+namespace meshprep {
+
+using Box3 = Eigen::AlignedBox3d;
+
+/// Bounding box of the vertices the faces of `soup` use (empty box if there is no face).
+Box3 bounding_box(const TriangleSoup& soup);
+
+/// Closest point on triangle (a, b, c) to p (exact, Ericson's region classification).
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+class TriangleBvh {
+ public:
+  /// Builds the hierarchy over every triangle of `soup` (the soup must outlive the BVH).
+  explicit TriangleBvh(const TriangleSoup& soup);
+
+  struct Hit {
+    std::size_t face = 0;
+    Vec3 point = Vec3::Zero();
+    double squared_distance = 0;
+  };
+
+  /// Closest point of the surface to p. \pre the soup has at least one triangle.
+  Hit closest_point(const Vec3& p) const;
+
+  /// Calls `visit(face)` for every triangle whose box overlaps `box`.
+  void for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const;
+
+  const TriangleSoup& soup() const { return soup_; }
+
+ private:
+  struct Node {
+    Box3 box;
+    std::uint32_t first = 0;  ///< leaf: first index into order_
+    std::uint32_t count = 0;  ///< leaf: number of triangles; 0 for an inner node
+    std::uint32_t left = 0, right = 0;  ///< inner node: children
+  };
+  std::uint32_t build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids);
+
+  const TriangleSoup& soup_;
+  std::vector<Box3> boxes_;           ///< per triangle
+  std::vector<std::uint32_t> order_;  ///< triangle indices, grouped by leaf
+  std::vector<Node> nodes_;           ///< nodes_[0] is the root
+};
+
+}  // namespace meshprep

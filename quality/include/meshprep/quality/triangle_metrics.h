@@ -1,0 +1,36 @@
+#pragma once
+/// \file triangle_metrics.h
+/// Shape measures of one triangle. Definitions (the names are the JSON keys):
+/// - radius_ratio = R / (2 r), circumradius over twice the inradius: 1 for an equilateral
+///   triangle, +inf for a degenerate one. With edge lengths a, b, c and area A,
+///   R = abc / (4A) and r = 2A / (a+b+c), so R/(2r) = abc (a+b+c) / (16 A^2).
+/// - aspect_ratio = l_max (a+b+c) / (4 sqrt(3) A) (the Verdict/VTK triangle aspect ratio; 1 for
+///   equilateral, +inf for degenerate).
+/// - min_angle_deg, max_angle_deg: interior angles in degrees, from atan2(|u x v|, u.v) (accurate
+///   for angles near 0 and 180 degrees, unlike acos).
+/// - area.
+
+#include "meshprep/core/mesh.h"
+
+#include <vector>
+
+namespace meshprep {
+
+struct TriangleShape {
+  double radius_ratio = 0;
+  double aspect_ratio = 0;
+  double min_angle_deg = 0;
+  double max_angle_deg = 0;
+  double area = 0;
+  /// Zero area (collinear or repeated corners): the ratios are +inf and the angles are those of
+  /// the flat triangle (0 and 180 for distinct collinear corners, NaN for repeated corners).
+  bool degenerate = false;
+};
+
+/// Shape of the triangle (a, b, c).
+TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// Shape of every triangle of a soup, in face order (parallel over faces).
+std::vector<TriangleShape> triangle_shapes(const TriangleSoup& soup);
+
+}  // namespace meshprep

@@ -1,0 +1,140 @@
+#include "meshprep/quality/report.h"
+
+#include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/surface_distance.h"
+#include "meshprep/quality/topology.h"
+#include "meshprep/quality/triangle_bvh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace meshprep {
+namespace {
+
+constexpr std::size_t kListedPairs = 100;
+
+void fill_topology(const TriangleSoup& soup, QualityReport& r) {
+  const Topology topo = analyze_topology(soup);
+  r.vertices = topo.referenced_vertices;
+  r.faces = soup.triangles.size();
+  r.edges = topo.edges;
+  r.components = topo.components;
+  r.border_edges = topo.border_edges;
+  r.boundary_loops = topo.boundary_loops;
+  r.non_manifold_edges = topo.non_manifold_edges;
+  r.non_manifold_vertices = topo.non_manifold_vertices;
+  r.closed = topo.closed;
+  r.manifold = topo.manifold;
+  r.oriented = topo.oriented;
+  r.euler_characteristic = topo.euler_characteristic;
+  r.genus = topo.genus;
+  r.duplicate_faces = topo.duplicate_faces;
+  // The divergence theorem gives the enclosed volume when every edge has exactly two faces
+  // traversing it in opposite directions (non-manifold vertices do not matter for it).
+  const bool volume_defined = topo.closed && topo.non_manifold_edges == 0 && topo.inconsistent_edges == 0 &&
+                              topo.repeated_index_faces == 0 && !soup.triangles.empty();
+  if (volume_defined) {
+    double six_volume = 0;
+    for (const Triangle& t : soup.triangles)
+      six_volume += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
+    r.volume = six_volume / 6.0;
+  }
+}
+
+void fill_shape(const TriangleSoup& soup, std::size_t n_worst, QualityReport& r) {
+  r.face_shapes = triangle_shapes(soup);
+  const std::size_t n = r.face_shapes.size();
+  std::vector<double> rr, ar, amin, amax, area;
+  for (auto* v : {&rr, &ar, &amin, &amax, &area}) v->reserve(n);
+  std::size_t below20 = 0, below10 = 0, rr_above2 = 0;
+  for (const TriangleShape& s : r.face_shapes) {
+    r.area += s.area;
+    if (s.degenerate) {
+      ++r.degenerate_faces;
+      continue;
+    }
+    rr.push_back(s.radius_ratio);
+    ar.push_back(s.aspect_ratio);
+    amin.push_back(s.min_angle_deg);
+    amax.push_back(s.max_angle_deg);
+    area.push_back(s.area);
+    below20 += s.min_angle_deg < 20.0;
+    below10 += s.min_angle_deg < 10.0;
+    rr_above2 += s.radius_ratio > 2.0;
+  }
+  const double counted = static_cast<double>(rr.size());
+  if (!rr.empty()) {
+    r.faces_min_angle_below_20 = static_cast<double>(below20) / counted;
+    r.faces_min_angle_below_10 = static_cast<double>(below10) / counted;
+    r.faces_radius_ratio_above_2 = static_cast<double>(rr_above2) / counted;
+  }
+  r.radius_ratio = summarize(std::move(rr));
+  r.aspect_ratio = summarize(std::move(ar));
+  r.min_angle_deg = summarize(std::move(amin));
+  r.max_angle_deg = summarize(std::move(amax));
+  r.area_distribution = summarize(std::move(area));
+
+  // Worst first by radius ratio (degenerate faces have +inf); ties by index for determinism.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const std::size_t k = std::min(n_worst, n);
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
+                    [&](std::size_t a, std::size_t b) {
+                      const double ra = r.face_shapes[a].radius_ratio, rb = r.face_shapes[b].radius_ratio;
+                      return ra > rb || (ra == rb && a < b);
+                    });
+  for (std::size_t i = 0; i < k; ++i) r.worst_faces.push_back({order[i], r.face_shapes[order[i]]});
+}
+
+void fill_bbox(const TriangleSoup& soup, QualityReport& r) {
+  const Box3 box = bounding_box(soup);
+  if (box.isEmpty()) return;
+  r.bbox_min = box.min();
+  r.bbox_max = box.max();
+  r.bbox_diagonal = box.diagonal().norm();
+}
+
+ReferenceComparison compare_with(const TriangleSoup& soup, const QualityReport& r, const TriangleSoup& reference,
+                                 const QualityParams& params) {
+  DistanceParams dp;
+  dp.samples = params.distance_samples;
+  dp.seed = params.seed;
+  const SurfaceDistance d = surface_distance(soup, reference, dp);
+  ReferenceComparison c;
+  c.reference_bbox_diagonal = bbox_diagonal(reference);
+  const double diag = c.reference_bbox_diagonal > 0 ? c.reference_bbox_diagonal : 1.0;
+  c.hausdorff = d.hausdorff();
+  c.hausdorff_relative = c.hausdorff / diag;
+  c.rms_relative = d.rms() / diag;
+  c.mean_relative = d.mean() / diag;
+  c.samples = d.a_to_b.points;
+  if (r.volume) {
+    QualityReport ref;
+    fill_topology(reference, ref);
+    if (ref.volume && *ref.volume != 0) c.volume_change_percent = (*r.volume - *ref.volume) / *ref.volume * 100.0;
+  }
+  return c;
+}
+
+}  // namespace
+
+QualityReport analyze_quality(const TriangleSoup& soup, const QualityParams& params, const TriangleSoup* reference) {
+  const auto start = std::chrono::steady_clock::now();
+  QualityReport r;
+  fill_topology(soup, r);
+  fill_shape(soup, params.worst_faces, r);
+  fill_bbox(soup, r);
+  if (params.self_intersection_cap > 0) {
+    SelfIntersections si = find_self_intersections(soup, params.self_intersection_cap);
+    r.self_intersections = si.count;
+    r.self_intersections_capped = si.capped;
+    si.pairs.resize(std::min(si.pairs.size(), kListedPairs));
+    r.self_intersecting_pairs = std::move(si.pairs);
+  }
+  if (reference) r.reference = compare_with(soup, r, *reference, params);
+  r.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace meshprep

@@ -1,0 +1,93 @@
+#include "meshprep/quality/self_intersections.h"
+
+#include "meshprep/quality/triangle_bvh.h"
+#include "meshprep/quality/triangle_intersection.h"
+
+#include "robust_predicates.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace meshprep {
+namespace {
+
+bool has_area(const TriangleSoup& soup, const Triangle& t) {
+  const Vec3 &a = soup.points[t[0]], &b = soup.points[t[1]], &c = soup.points[t[2]];
+  return (b - a).cross(c - a).squaredNorm() > 0;
+}
+
+bool faces_intersect(const TriangleSoup& soup, const Triangle& a, const Triangle& b) {
+  const auto& P = soup.points;
+  int shared = 0, ia = -1, ib = -1;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      if (a[i] == b[k]) {
+        ++shared;
+        if (ia < 0) {
+          ia = i;
+          ib = k;
+        }
+      }
+  switch (shared) {
+    case 0:
+      return triangles_intersect(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
+    case 1: {  // an intersection away from the shared corner crosses an opposite edge
+      const Vec3 &a1 = P[a[(ia + 1) % 3]], &a2 = P[a[(ia + 2) % 3]];
+      const Vec3 &b1 = P[b[(ib + 1) % 3]], &b2 = P[b[(ib + 2) % 3]];
+      return segment_intersects_triangle(a1, a2, P[b[0]], P[b[1]], P[b[2]]) ||
+             segment_intersects_triangle(b1, b2, P[a[0]], P[a[1]], P[a[2]]);
+    }
+    case 2: {  // neighbours across an edge meet elsewhere only if they fold onto each other
+      auto opposite = [](const Triangle& t, const Triangle& other) {
+        for (auto v : t)
+          if (v != other[0] && v != other[1] && v != other[2]) return v;
+        return t[0];
+      };
+      const auto oa = opposite(a, b), ob = opposite(b, a);
+      std::uint32_t s[2];
+      int n = 0;
+      for (auto v : a)
+        if (v != oa) s[n++] = v;
+      return neighbours_fold(P[s[0]], P[s[1]], P[oa], P[ob]);
+    }
+    default:  // the same three vertices: a duplicated face
+      return true;
+  }
+}
+
+}  // namespace
+
+SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t cap) {
+  const std::size_t n = soup.triangles.size();
+  detail::reset_robust_predicates();  // before the parallel section: TetGen may have changed them
+  std::vector<char> valid(n);
+  for (std::size_t f = 0; f < n; ++f) valid[f] = has_area(soup, soup.triangles[f]) ? 1 : 0;
+  const TriangleBvh bvh(soup);
+  std::vector<std::vector<std::size_t>> partners(n);  // partners[i]: faces j > i meeting face i
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      if (!valid[i]) continue;
+      Box3 box;
+      box.setEmpty();
+      for (auto v : soup.triangles[i]) box.extend(soup.points[v]);
+      bvh.for_each_overlapping(box, [&](std::size_t j) {
+        if (j > i && valid[j] && faces_intersect(soup, soup.triangles[i], soup.triangles[j])) partners[i].push_back(j);
+      });
+      std::sort(partners[i].begin(), partners[i].end());
+    }
+  });
+  SelfIntersections result;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j : partners[i]) {
+      if (cap > 0 && result.count == cap) {
+        result.capped = true;
+        return result;
+      }
+      ++result.count;
+      result.pairs.emplace_back(i, j);
+    }
+  return result;
+}
+
+}  // namespace meshprep

@@ -1,0 +1,135 @@
+#include "meshprep/quality/topology.h"
+
+#include "union_find.h"
+
+#include <algorithm>
+#include <unordered_set>
+
+namespace meshprep {
+namespace {
+
+constexpr std::size_t kMaxListed = 100;  // offending faces listed per problem
+
+bool repeats_index(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
+
+// One directed edge of a face, keyed by its undirected vertex pair.
+struct FaceEdge {
+  std::uint64_t key;
+  std::uint32_t face;
+  bool forward;  // traversed from the smaller to the larger vertex index
+};
+
+std::vector<FaceEdge> sorted_face_edges(const TriangleSoup& soup) {
+  std::vector<FaceEdge> edges;
+  edges.reserve(3 * soup.triangles.size());
+  for (std::uint32_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    if (repeats_index(t)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const std::uint64_t a = t[c], b = t[(c + 1) % 3];
+      edges.push_back({a < b ? (a << 32 | b) : (b << 32 | a), f, a < b});
+    }
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const FaceEdge& x, const FaceEdge& y) { return x.key < y.key || (x.key == y.key && x.face < y.face); });
+  return edges;
+}
+
+// Corner id of vertex v in face f: 3 f + local index.
+std::uint32_t corner(const TriangleSoup& soup, std::uint32_t f, std::uint32_t v) {
+  const Triangle& t = soup.triangles[f];
+  return 3 * f + (t[0] == v ? 0 : t[1] == v ? 1 : 2);
+}
+
+void count_duplicates(const TriangleSoup& soup, Topology& topo) {
+  struct Hash {
+    std::size_t operator()(const Triangle& t) const {
+      return (std::size_t{t[0]} * 73856093u) ^ (std::size_t{t[1]} * 19349663u) ^ (std::size_t{t[2]} * 83492791u);
+    }
+  };
+  std::unordered_set<Triangle, Hash> seen;
+  seen.reserve(soup.triangles.size());
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    Triangle t = soup.triangles[f];
+    std::sort(t.begin(), t.end());
+    if (!seen.insert(t).second) {
+      ++topo.duplicate_faces;
+      if (topo.duplicate_face_indices.size() < kMaxListed) topo.duplicate_face_indices.push_back(f);
+    }
+  }
+}
+
+}  // namespace
+
+Topology analyze_topology(const TriangleSoup& soup) {
+  Topology topo;
+  const std::size_t n_faces = soup.triangles.size(), n_points = soup.points.size();
+  std::vector<char> used(n_points, 0);
+  std::size_t valid_faces = 0;
+  for (const Triangle& t : soup.triangles) {
+    for (auto v : t) used[v] = 1;
+    if (repeats_index(t)) ++topo.repeated_index_faces;
+    else ++valid_faces;
+  }
+  topo.referenced_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+  topo.isolated_vertices = n_points - topo.referenced_vertices;
+
+  const std::vector<FaceEdge> edges = sorted_face_edges(soup);
+  detail::UnionFind faces(n_faces), corners(3 * n_faces), border_vertices(n_points);
+  std::vector<char> on_border(n_points, 0);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t k = i;
+    while (k < edges.size() && edges[k].key == edges[i].key) ++k;
+    const std::size_t uses = k - i;
+    const auto a = static_cast<std::uint32_t>(edges[i].key >> 32), b = static_cast<std::uint32_t>(edges[i].key);
+    ++topo.edges;
+    if (uses == 1) {
+      ++topo.border_edges;
+      border_vertices.unite(a, b);
+      on_border[a] = on_border[b] = 1;
+    } else if (uses > 2) {
+      ++topo.non_manifold_edges;
+      for (std::size_t q = i; q < k && topo.non_manifold_edge_faces.size() < kMaxListed; ++q)
+        topo.non_manifold_edge_faces.push_back(edges[q].face);
+    } else if (edges[i].forward == edges[i + 1].forward) {
+      ++topo.inconsistent_edges;
+    }
+    // Faces across an edge are connected, and their corners at the edge's ends lie in one fan.
+    for (std::size_t q = i + 1; q < k; ++q) {
+      faces.unite(edges[i].face, edges[q].face);
+      corners.unite(corner(soup, edges[i].face, a), corner(soup, edges[q].face, a));
+      corners.unite(corner(soup, edges[i].face, b), corner(soup, edges[q].face, b));
+    }
+    i = k;
+  }
+
+  // A vertex is non-manifold when its corners fall into more than one fan.
+  std::vector<std::uint32_t> first_fan(n_points, UINT32_MAX);
+  std::vector<char> non_manifold_vertex(n_points, 0);
+  for (std::uint32_t f = 0; f < n_faces; ++f) {
+    const Triangle& t = soup.triangles[f];
+    if (repeats_index(t)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t fan = corners.find(3 * f + static_cast<std::uint32_t>(c));
+      if (first_fan[t[c]] == UINT32_MAX) first_fan[t[c]] = fan;
+      else if (first_fan[t[c]] != fan) non_manifold_vertex[t[c]] = 1;
+    }
+  }
+  topo.non_manifold_vertices = static_cast<std::size_t>(std::count(non_manifold_vertex.begin(), non_manifold_vertex.end(), 1));
+  for (std::uint32_t f = 0; f < n_faces; ++f)
+    if (!repeats_index(soup.triangles[f]) && faces.find(f) == f) ++topo.components;
+  for (std::uint32_t v = 0; v < n_points; ++v)
+    if (on_border[v] && border_vertices.find(v) == v) ++topo.boundary_loops;
+  count_duplicates(soup, topo);
+
+  topo.closed = topo.border_edges == 0;
+  topo.manifold = topo.non_manifold_edges == 0 && topo.non_manifold_vertices == 0 && topo.repeated_index_faces == 0;
+  topo.oriented = topo.manifold && topo.inconsistent_edges == 0;
+  topo.euler_characteristic = static_cast<long long>(topo.referenced_vertices) - static_cast<long long>(topo.edges) +
+                              static_cast<long long>(valid_faces);
+  if (topo.closed && topo.manifold)
+    topo.genus = (2 * static_cast<long long>(topo.components) - topo.euler_characteristic) / 2;
+  return topo;
+}
+
+}  // namespace meshprep

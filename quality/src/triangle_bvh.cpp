@@ -1,0 +1,145 @@
+#include "meshprep/quality/triangle_bvh.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace meshprep {
+namespace {
+
+constexpr std::uint32_t kLeafSize = 4;
+constexpr int kMaxDepth = 64;  // median splits: depth is log2(n / kLeafSize) + 1
+
+}  // namespace
+
+Box3 bounding_box(const TriangleSoup& soup) {
+  Box3 box;
+  box.setEmpty();
+  for (const Triangle& t : soup.triangles)
+    for (auto v : t) box.extend(soup.points[v]);
+  return box;
+}
+
+// Real-Time Collision Detection (Ericson 2005), section 5.1.5: classify p against the Voronoi
+// regions of the triangle's vertices and edges; otherwise project onto the face.
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = va + vb + vc;
+  if (!(denom > 0)) {  // degenerate (collinear) triangle: fall back to its corners
+    const Vec3* best = &a;
+    for (const Vec3* q : {&b, &c})
+      if ((p - *q).squaredNorm() < (p - *best).squaredNorm()) best = q;
+    return *best;
+  }
+  return a + ab * (vb / denom) + ac * (vc / denom);
+}
+
+TriangleBvh::TriangleBvh(const TriangleSoup& soup) : soup_(soup) {
+  const auto n = static_cast<std::uint32_t>(soup.triangles.size());
+  boxes_.resize(n);
+  std::vector<Vec3> centroids(n);
+  for (std::uint32_t f = 0; f < n; ++f) {
+    boxes_[f].setEmpty();
+    for (auto v : soup.triangles[f]) boxes_[f].extend(soup.points[v]);
+    centroids[f] = boxes_[f].center();
+  }
+  order_.resize(n);
+  for (std::uint32_t f = 0; f < n; ++f) order_[f] = f;
+  nodes_.reserve(2 * (n / kLeafSize + 1));
+  if (n > 0) build(0, n, centroids);
+}
+
+std::uint32_t TriangleBvh::build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids) {
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Box3 box;
+  box.setEmpty();
+  for (std::uint32_t i = begin; i < end; ++i) box.extend(boxes_[order_[i]]);
+  nodes_[index].box = box;
+  if (end - begin <= kLeafSize) {
+    nodes_[index].first = begin;
+    nodes_[index].count = end - begin;
+    return index;
+  }
+  Box3 centre_box;
+  centre_box.setEmpty();
+  for (std::uint32_t i = begin; i < end; ++i) centre_box.extend(centroids[order_[i]]);
+  int axis = 0;
+  centre_box.sizes().maxCoeff(&axis);
+  const std::uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](std::uint32_t x, std::uint32_t y) { return centroids[x][axis] < centroids[y][axis]; });
+  const std::uint32_t left = build(begin, mid, centroids);
+  const std::uint32_t right = build(mid, end, centroids);
+  nodes_[index].left = left;
+  nodes_[index].right = right;
+  return index;
+}
+
+TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
+  Hit best;
+  best.squared_distance = std::numeric_limits<double>::infinity();
+  if (nodes_.empty()) return best;
+  std::uint32_t stack[kMaxDepth * 2];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (node.box.squaredExteriorDistance(p) >= best.squared_distance) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const Triangle& t = soup_.triangles[order_[i]];
+        const Vec3 q = closest_point_on_triangle(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
+        const double d2 = (q - p).squaredNorm();
+        if (d2 < best.squared_distance || (d2 == best.squared_distance && order_[i] < best.face)) {
+          best = {order_[i], q, d2};
+        }
+      }
+      continue;
+    }
+    // Visit the nearer child first (pushed last) so that the bound shrinks early.
+    const double dl = nodes_[node.left].box.squaredExteriorDistance(p);
+    const double dr = nodes_[node.right].box.squaredExteriorDistance(p);
+    if (dl < dr) {
+      stack[top++] = node.right;
+      stack[top++] = node.left;
+    } else {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+    }
+  }
+  return best;
+}
+
+void TriangleBvh::for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const {
+  if (nodes_.empty()) return;
+  std::uint32_t stack[kMaxDepth * 2];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!node.box.intersects(box)) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+        if (boxes_[order_[i]].intersects(box)) visit(order_[i]);
+      continue;
+    }
+    stack[top++] = node.left;
+    stack[top++] = node.right;
+  }
+}
+
+}  // namespace meshprep

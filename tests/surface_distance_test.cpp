@@ -1,0 +1,75 @@
+#include "meshprep/quality/surface_distance.h"
+#include "meshprep/quality/triangle_bvh.h"
+
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace meshprep;
+
+TEST(TriangleBvh, ClosestPointMatchesBruteForce) {
+  const TriangleSoup s = test::icosphere(3);
+  const TriangleBvh bvh(s);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    double best = INFINITY;
+    for (const Triangle& t : s.triangles)
+      best = std::min(best, (closest_point_on_triangle(p, s.points[t[0]], s.points[t[1]], s.points[t[2]]) - p).squaredNorm());
+    EXPECT_DOUBLE_EQ(bvh.closest_point(p).squared_distance, best);
+  }
+}
+
+TEST(ClosestPointOnTriangle, Regions) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  EXPECT_TRUE(closest_point_on_triangle({0.2, 0.2, 5}, a, b, c).isApprox(Vec3(0.2, 0.2, 0)));
+  EXPECT_TRUE(closest_point_on_triangle({-1, -1, 0}, a, b, c).isApprox(a));
+  EXPECT_TRUE(closest_point_on_triangle({0.5, -3, 1}, a, b, c).isApprox(Vec3(0.5, 0, 0)));
+  EXPECT_TRUE(closest_point_on_triangle({1, 1, 0}, a, b, c).isApprox(Vec3(0.5, 0.5, 0)));
+}
+
+TEST(SurfaceDistance, MeshAgainstItselfIsZero) {
+  const TriangleSoup s = test::icosphere(2);
+  DistanceParams p;
+  p.samples = 20000;
+  const SurfaceDistance d = surface_distance(s, s, p);
+  // Each sample lies on the surface it is measured against: only the round-off of the
+  // closest-point projection remains (unit sphere: ~1e-16).
+  EXPECT_LT(d.hausdorff(), 1e-14);
+  EXPECT_LT(d.rms(), 1e-14);
+}
+
+TEST(SurfaceDistance, ShiftedPlaneGivesTheShift) {
+  // Two parallel 10 x 10 grids 0.25 apart over the same footprint: every point of one lies
+  // exactly 0.25 above or below the other surface.
+  const double shift = 0.25;
+  const TriangleSoup a = test::grid(10), b = test::grid(10, shift);
+  DistanceParams p;
+  p.samples = 20000;
+  const SurfaceDistance d = surface_distance(a, b, p);
+  EXPECT_NEAR(d.hausdorff(), shift, 1e-12);
+  EXPECT_NEAR(d.rms(), shift, 1e-12);
+  EXPECT_NEAR(d.mean(), shift, 1e-12);
+}
+
+TEST(SurfaceDistance, SphereInscribedPolyhedronConverges) {
+  // An icosphere's vertices lie on the unit sphere and its faces inside it; the gap shrinks
+  // about 4x per subdivision level (the sagitta of an edge of length h is ~h^2/8).
+  DistanceParams p;
+  p.samples = 20000;
+  const double coarse = surface_distance(test::icosphere(2), test::icosphere(4), p).hausdorff();
+  const double fine = surface_distance(test::icosphere(3), test::icosphere(4), p).hausdorff();
+  EXPECT_GT(coarse, 2.5 * fine);
+}
+
+TEST(SurfaceDistance, DeterministicForASeed) {
+  const TriangleSoup a = test::icosphere(2), b = test::icosphere(3, 1.01);
+  DistanceParams p;
+  p.samples = 5000;
+  const SurfaceDistance d1 = surface_distance(a, b, p), d2 = surface_distance(a, b, p);
+  EXPECT_EQ(d1.rms(), d2.rms());
+  EXPECT_EQ(d1.hausdorff(), d2.hausdorff());
+}

@@ -1,0 +1,98 @@
+#include "test_meshes.h"
+
+#include <cmath>
+#include <map>
+
+namespace meshprep::test {
+
+TriangleSoup regular_tetrahedron(double edge) {
+  // Alternate corners of a cube with side edge / sqrt(2) form a regular tetrahedron.
+  const double h = edge / std::sqrt(2.0);
+  TriangleSoup s;
+  s.points = {{0, 0, 0}, {h, h, 0}, {h, 0, h}, {0, h, h}};
+  s.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+  return s;
+}
+
+TriangleSoup cube(double s) {
+  TriangleSoup c;
+  for (int i = 0; i < 8; ++i) c.points.push_back(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1) * s);
+  // Two triangles per side, counter-clockwise seen from outside.
+  c.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return c;
+}
+
+TriangleSoup icosphere(int levels, double r) {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  TriangleSoup s;
+  s.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  s.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                 {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (auto& p : s.points) p = p.normalized() * r;
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
+    auto mid = [&](std::uint32_t a, std::uint32_t b) {
+      const auto key = std::minmax(a, b);
+      auto it = midpoint.find(key);
+      if (it != midpoint.end()) return it->second;
+      s.points.push_back(((s.points[a] + s.points[b]) * 0.5).normalized() * r);
+      const auto index = static_cast<std::uint32_t>(s.points.size() - 1);
+      midpoint[key] = index;
+      return index;
+    };
+    std::vector<Triangle> finer;
+    for (const Triangle& f : s.triangles) {
+      const auto ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+      finer.insert(finer.end(), {{f[0], ab, ca}, {f[1], bc, ab}, {f[2], ca, bc}, {ab, bc, ca}});
+    }
+    s.triangles = std::move(finer);
+  }
+  return s;
+}
+
+TriangleSoup torus(int n, int m, double R, double r) {
+  TriangleSoup s;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+      s.points.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  auto id = [&](int i, int j) { return static_cast<std::uint32_t>((i % n) * m + (j % m)); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+TriangleSoup grid(int n, double z0) {
+  TriangleSoup s;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) s.points.emplace_back(i, j, z0);
+  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+TriangleSoup translated(TriangleSoup soup, const Vec3& t) {
+  for (auto& p : soup.points) p += t;
+  return soup;
+}
+
+TriangleSoup merged(const TriangleSoup& a, const TriangleSoup& b) {
+  TriangleSoup s = a;
+  const auto offset = static_cast<std::uint32_t>(a.points.size());
+  s.points.insert(s.points.end(), b.points.begin(), b.points.end());
+  for (Triangle t : b.triangles) s.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  return s;
+}
+
+}  // namespace meshprep::test
