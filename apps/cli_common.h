@@ -1,0 +1,33 @@
+#pragma once
+// Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+
+namespace meshprep::cli {
+
+/// Exit codes of the CLI contract.
+enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2 };
+
+/// The work could not be done (exit 1), with the reason.
+class WorkFailed : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Write `json` to `target`: "-" is stdout, anything else a file written atomically.
+void emit_json(const nlohmann::ordered_json& json, const std::string& target);
+
+/// \throws InvalidInput if `output` names the same file as `input` (outputs never clobber inputs).
+void ensure_not_input(const std::string& output, const std::string& input);
+
+/// A subcommand: registers its options on `app` and returns the action to run once parsed.
+using Action = std::function<int()>;
+
+Action add_quality_command(CLI::App& app);
+Action add_convert_command(CLI::App& app);
+
+}  // namespace meshprep::cli

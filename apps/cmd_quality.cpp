@@ -1,0 +1,102 @@
+// meshprep quality MESH [--reference REF] [--json FILE|-] [--csv FILE] [--vtk FILE] [--html FILE]
+//                       [--fail-on CONDITIONS] [--worst N] [--samples N]
+#include "cli_common.h"
+
+#include "meshprep/core/io.h"
+#include "meshprep/quality/quality_gate.h"
+#include "meshprep/quality/report.h"
+#include "meshprep/quality/report_writers.h"
+
+#include <iostream>
+#include <memory>
+
+namespace meshprep::cli {
+namespace {
+
+struct QualityOptions {
+  std::string input, reference, json, csv, vtk, html, fail_on;
+  std::size_t worst = 10;
+  std::size_t samples = 1000000;
+};
+
+// Faces a halfedge mesh cannot hold (non-manifold edge or vertex): later stages would drop them,
+// so the user hears about it here, with the indices.
+nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport& read) {
+  MeshBuildReport build;
+  mesh_from_soup(soup, &build);
+  nlohmann::ordered_json j;
+  j["format"] = read.format;
+  j["faces_in_file"] = read.faces_in_file;
+  j["polygons_triangulated"] = read.polygons_triangulated;
+  j["faces_not_manifold_representable"] = build.dropped_faces.size();
+  j["faces_not_manifold_representable_indices"] = build.dropped_faces;
+  if (read.polygons_triangulated > 0)
+    std::cerr << "meshprep: note: " << read.path << ": " << read.polygons_triangulated
+              << " polygons with more than 3 corners were fan-triangulated\n";
+  if (!build.dropped_faces.empty()) {
+    std::cerr << "meshprep: warning: " << read.path << ": " << build.dropped_faces.size()
+              << " faces make an edge or vertex non-manifold; the processing stages would drop them (faces";
+    for (std::size_t i = 0; i < build.dropped_faces.size() && i < 10; ++i) std::cerr << ' ' << build.dropped_faces[i];
+    std::cerr << (build.dropped_faces.size() > 10 ? " ...)\n" : ")\n");
+  }
+  return j;
+}
+
+int run_quality(const QualityOptions& o) {
+  // Parse the gate first: a typo in it is a usage error, found before any work.
+  std::vector<GateCondition> gate;
+  if (!o.fail_on.empty()) gate = parse_quality_gate(o.fail_on);
+
+  for (const std::string* out : {&o.json, &o.csv, &o.vtk, &o.html}) {
+    ensure_not_input(*out, o.input);
+    ensure_not_input(*out, o.reference);
+  }
+  ReadReport read;
+  const TriangleSoup soup = read_soup(o.input, &read);
+  std::unique_ptr<TriangleSoup> reference;
+  if (!o.reference.empty()) reference = std::make_unique<TriangleSoup>(read_soup(o.reference));
+
+  QualityParams params;
+  params.worst_faces = o.worst;
+  params.distance_samples = o.samples;
+  QualityReport report = analyze_quality(soup, params, reference.get());
+  report.path = o.input;
+  if (report.reference) report.reference->path = o.reference;
+
+  nlohmann::ordered_json json = to_json(report);
+  json["input"] = describe_input(soup, read);
+  if (!o.csv.empty()) write_csv(o.csv, soup, report);
+  if (!o.vtk.empty()) write_vtk(o.vtk, soup, report);
+  if (!o.html.empty()) write_html(o.html, report);
+  if (!o.json.empty()) emit_json(json, o.json);
+  if (o.json != "-") write_text_summary(std::cout, report);
+
+  const auto failed = failed_conditions(gate, json);
+  if (failed.empty()) return kSuccess;
+  std::cerr << "meshprep: quality gate failed:";
+  for (const auto& c : failed) std::cerr << ' ' << c.text << " (is " << c.actual.dump() << ')';
+  std::cerr << '\n';
+  return kWorkFailed;
+}
+
+}  // namespace
+
+Action add_quality_command(CLI::App& app) {
+  auto o = std::make_shared<QualityOptions>();
+  CLI::App* cmd = app.add_subcommand("quality", "Measure a surface mesh: topology, triangle shape, distance to a reference");
+  cmd->add_option("mesh", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
+  cmd->add_option("--reference", o->reference, "Reference surface: adds Hausdorff/RMS/mean distance and volume change");
+  cmd->add_option("--json", o->json, "Write the report as JSON to FILE ('-' = stdout, replaces the table)");
+  cmd->add_option("--csv", o->csv, "Write one row per face to FILE");
+  cmd->add_option("--vtk", o->vtk, "Write the mesh with per-face metrics as cell data (legacy VTK, for ParaView)");
+  cmd->add_option("--html", o->html, "Write a self-contained HTML report with histograms");
+  cmd->add_option("--fail-on", o->fail_on,
+                  "Quality gate: exit 1 if any condition holds, e.g. \"radius_ratio.p95>3,closed=false\"");
+  cmd->add_option("--worst", o->worst, "How many worst faces to list")->capture_default_str();
+  cmd->add_option("--samples", o->samples, "Random samples per direction for reference distances")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
+  return [o] { return run_quality(*o); };
+}
+
+}  // namespace meshprep::cli

@@ -1,0 +1,147 @@
+#!/usr/bin/env bash
+# The command-line contract on the real binary: exit codes, one clear error line naming the file,
+# no output file left behind on failure, inputs never modified.
+# Usage: cli_contract_test.sh MESHPREP_BINARY
+set -uo pipefail
+bin=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+passed=0 failed=0
+
+check() {  # check NAME EXPECTED_EXIT ACTUAL_EXIT [condition...]
+  local name=$1 want=$2 got=$3
+  if [ "$want" = "$got" ]; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL: $name: exit $got, expected $want"; cat err.txt 2>/dev/null
+  fi
+}
+expect_error() {  # expect_error NAME PATTERN: stderr is one line matching PATTERN
+  local name=$1 pattern=$2
+  if [ "$(wc -l < err.txt)" -eq 1 ] && grep -q -- "$pattern" err.txt; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL: $name: stderr does not match '$pattern':"; cat err.txt
+  fi
+}
+expect_no_file() {
+  if [ ! -e "$1" ] && [ -z "$(ls -A out 2>/dev/null)" ]; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL: $2: output $1 (or a temporary) exists"; ls -la out
+  fi
+}
+
+mkdir -p out
+cat > tet.off <<'EOM'
+OFF
+4 4 0
+0 0 0
+1 1 0
+1 0 1
+0 1 1
+3 0 1 2
+3 0 3 1
+3 0 2 3
+3 1 3 2
+EOM
+
+# A good run: summary on stdout, exit 0, JSON parseable and complete.
+"$bin" quality tet.off --json out/q.json > summary.txt 2> err.txt; check "quality ok" 0 $?
+grep -q "closed" summary.txt && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: no summary"; }
+python3 - <<'PY' && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: json content"; }
+import json, math
+j = json.load(open("out/q.json"))
+assert j["faces"] == 4 and j["closed"] and j["manifold"] and j["oriented"] and j["genus"] == 0
+assert abs(j["volume"] - 1/3) < 1e-12, j["volume"]   # cube-corner tetrahedron of side 1: 1 - 4/6
+assert j["input"]["format"] == "off"
+for key in ("radius_ratio", "aspect_ratio", "min_angle_deg", "max_angle_deg", "face_area"):
+    assert set(j[key]) >= {"min", "mean", "p5", "p50", "p95", "max"}, key
+PY
+"$bin" quality tet.off --json - > stdout.json 2> err.txt; check "json to stdout" 0 $?
+python3 -c "import json; json.load(open('stdout.json'))" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: --json - is not pure JSON"; }
+
+# Quality gate: exit 1 naming the failed condition; a bad gate is a usage error.
+"$bin" quality tet.off --fail-on "radius_ratio.p95>0.9,closed=false" > /dev/null 2> err.txt; check "gate fails" 1 $?
+expect_error "gate message" "radius_ratio.p95>0.9"
+"$bin" quality tet.off --fail-on "radius_ratio.p95>2" > /dev/null 2> err.txt; check "gate passes" 0 $?
+"$bin" quality tet.off --fail-on "nonsense>2" > /dev/null 2> err.txt; check "gate unknown key" 2 $?
+
+# Malformed inputs: exit 2, one line naming the file, nothing written.
+rm -f out/*
+printf 'OFF\n4 4 0\n0 0 0\n1 1 0\n1 0 1\n0 1 1\n3 0 1 2\n' > truncated.off
+printf 'OFF\n3 1 0\n0 0 0\nnan 1 0\n1 0 1\n3 0 1 2\n' > nan.off
+printf 'OFF\n3 1 0\n0 0 0\n1 1 0\n1 0 1\n3 0 1 7\n' > range.off
+: > empty.off
+printf 'solid x\nthis is not a mesh\n' > garbage.stl
+printf 'hello\n' > mesh.xyz3
+for f in truncated.off:truncated nan.off:non-finite range.off:range empty.off:empty garbage.stl:garbage.stl \
+         missing.off:missing.off mesh.xyz3:mesh.xyz3; do
+  file=${f%%:*} pattern=${f#*:}
+  "$bin" quality "$file" --json out/bad.json --html out/bad.html > /dev/null 2> err.txt; check "bad input $file" 2 $?
+  expect_error "message for $file" "$pattern"
+  expect_no_file out/bad.json "bad input $file"
+done
+
+# A binary STL whose 80-byte header starts with "solid" is still read as binary.
+python3 - <<'PY'
+import struct
+tris = [((0,0,0),(1,1,0),(1,0,1)), ((0,0,0),(0,1,1),(1,1,0)), ((0,0,0),(1,0,1),(0,1,1)), ((1,1,0),(0,1,1),(1,0,1))]
+with open("solid_header.stl", "wb") as f:
+    f.write(b"solid but actually binary".ljust(80, b" "))
+    f.write(struct.pack("<I", len(tris)))
+    for t in tris:
+        f.write(struct.pack("<3f", 0, 0, 0))
+        for p in t: f.write(struct.pack("<3f", *p))
+        f.write(b"\0\0")
+PY
+"$bin" quality solid_header.stl --json out/stl.json > /dev/null 2> err.txt; check "binary stl with solid header" 0 $?
+python3 -c "
+import json; j = json.load(open('out/stl.json'))
+assert j['faces'] == 4 and j['vertices'] == 4 and j['closed'] and j['input']['format'] == 'stl-binary', j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: binary stl content"; }
+rm -f out/*
+
+# A non-manifold face (a fin on an edge) is reported with its index, not dropped silently.
+cat > fin.off <<'EOM'
+OFF
+5 5 0
+0 0 0
+1 1 0
+1 0 1
+0 1 1
+0.5 0.5 -1
+3 0 1 2
+3 0 3 1
+3 0 2 3
+3 1 3 2
+3 0 1 4
+EOM
+"$bin" quality fin.off --json out/fin.json > /dev/null 2> err.txt; check "non-manifold face" 0 $?
+expect_error "non-manifold face reported" "faces make an edge or vertex non-manifold.*4"
+python3 -c "
+import json; j = json.load(open('out/fin.json'))
+assert j['non_manifold_edges'] == 1 and not j['manifold'] and j['input']['faces_not_manifold_representable_indices'] == [4], j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: fin report"; }
+rm -f out/*
+
+# Usage errors: exit 2.
+"$bin" quality > /dev/null 2> err.txt; check "missing argument" 2 $?
+"$bin" quality tet.off --no-such-flag > /dev/null 2> err.txt; check "unknown flag" 2 $?
+"$bin" frobnicate > /dev/null 2> err.txt; check "unknown command" 2 $?
+"$bin" --help > /dev/null 2> err.txt; check "--help" 0 $?
+"$bin" quality --help > /dev/null 2> err.txt; check "quality --help" 0 $?
+"$bin" help > /dev/null 2> err.txt; check "help" 0 $?
+"$bin" --version > version.txt 2> err.txt; check "--version" 0 $?
+grep -q "meshprep [0-9]" version.txt && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: version"; }
+
+# Outputs never clobber the input; convert round-trips; unwritable output is exit 2.
+cp tet.off keep.off
+"$bin" quality keep.off --json keep.off > /dev/null 2> err.txt; check "json over input" 2 $?
+cmp -s tet.off keep.off && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: input modified"; }
+"$bin" convert tet.off out/tet.ply --binary > /dev/null 2> err.txt; check "convert to binary ply" 0 $?
+"$bin" convert out/tet.ply out/tet.stl > /dev/null 2> err.txt; check "convert to stl" 0 $?
+"$bin" quality out/tet.stl --json out/rt.json > /dev/null 2> err.txt; check "quality of converted" 0 $?
+python3 -c "
+import json; j = json.load(open('out/rt.json')); assert j['faces'] == 4 and j['closed'] and abs(j['volume'] - 1/3) < 1e-6, j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: round trip"; }
+"$bin" convert tet.off /nonexistent-dir/x.off > /dev/null 2> err.txt; check "unwritable output" 2 $?
+expect_error "unwritable message" "nonexistent-dir"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
