@@ -35,6 +35,7 @@ TEST(SurfaceDistance, MeshAgainstItselfIsZero) {
   const TriangleSoup s = test::icosphere(2);
   DistanceParams p;
   p.samples = 20000;
+  p.refine_faces = 16;
   const SurfaceDistance d = surface_distance(s, s, p);
   // Each sample lies on the surface it is measured against: only the round-off of the
   // closest-point projection remains (unit sphere: ~1e-16).
@@ -49,6 +50,7 @@ TEST(SurfaceDistance, ShiftedPlaneGivesTheShift) {
   const TriangleSoup a = test::grid(10), b = test::grid(10, shift);
   DistanceParams p;
   p.samples = 20000;
+  p.refine_faces = 16;
   const SurfaceDistance d = surface_distance(a, b, p);
   EXPECT_NEAR(d.hausdorff(), shift, 1e-12);
   EXPECT_NEAR(d.rms(), shift, 1e-12);
@@ -60,6 +62,7 @@ TEST(SurfaceDistance, SphereInscribedPolyhedronConverges) {
   // about 4x per subdivision level (the sagitta of an edge of length h is ~h^2/8).
   DistanceParams p;
   p.samples = 20000;
+  p.refine_faces = 16;
   const double coarse = surface_distance(test::icosphere(2), test::icosphere(4), p).hausdorff();
   const double fine = surface_distance(test::icosphere(3), test::icosphere(4), p).hausdorff();
   EXPECT_GT(coarse, 2.5 * fine);
@@ -69,6 +72,7 @@ TEST(SurfaceDistance, DeterministicForASeed) {
   const TriangleSoup a = test::icosphere(2), b = test::icosphere(3, 1.01);
   DistanceParams p;
   p.samples = 5000;
+  p.refine_faces = 16;
   const SurfaceDistance d1 = surface_distance(a, b, p), d2 = surface_distance(a, b, p);
   EXPECT_EQ(d1.rms(), d2.rms());
   EXPECT_EQ(d1.hausdorff(), d2.hausdorff());

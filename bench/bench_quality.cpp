@@ -1,0 +1,68 @@
+// Quality-report timings on bunny00, side by side with OpenMesh's own OFF reader as the peer
+// for reading. Run: build/bin/bench_quality (needs ../shared/data beside the clone).
+#include "meshprep/core/io.h"
+#include "meshprep/quality/report.h"
+#include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/topology.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+namespace {
+
+const std::string kBunny = std::string(MESHPREP_SHARED_DATA_DIR) + "/meshes/bunny00.off";
+
+bool have_data(benchmark::State& state) {
+  if (std::filesystem::exists(kBunny)) return true;
+  state.SkipWithError("../shared/data/meshes/bunny00.off not found");
+  return false;
+}
+
+void read_meshprep(benchmark::State& state) {
+  if (!have_data(state)) return;
+  for (auto _ : state) benchmark::DoNotOptimize(meshprep::read_soup(kBunny));
+}
+BENCHMARK(read_meshprep)->Unit(benchmark::kMillisecond);
+
+void read_openmesh_peer(benchmark::State& state) {
+  if (!have_data(state)) return;
+  for (auto _ : state) {
+    meshprep::TriMesh mesh;
+    benchmark::DoNotOptimize(OpenMesh::IO::read_mesh(mesh, kBunny));
+  }
+}
+BENCHMARK(read_openmesh_peer)->Unit(benchmark::kMillisecond);
+
+void topology(benchmark::State& state) {
+  if (!have_data(state)) return;
+  const auto soup = meshprep::read_soup(kBunny);
+  for (auto _ : state) benchmark::DoNotOptimize(meshprep::analyze_topology(soup));
+}
+BENCHMARK(topology)->Unit(benchmark::kMillisecond);
+
+void self_intersections(benchmark::State& state) {
+  if (!have_data(state)) return;
+  const auto soup = meshprep::read_soup(kBunny);
+  for (auto _ : state) benchmark::DoNotOptimize(meshprep::find_self_intersections(soup));
+}
+BENCHMARK(self_intersections)->Unit(benchmark::kMillisecond);
+
+void full_report(benchmark::State& state) {
+  if (!have_data(state)) return;
+  const auto soup = meshprep::read_soup(kBunny);
+  for (auto _ : state) benchmark::DoNotOptimize(meshprep::analyze_quality(soup));
+}
+BENCHMARK(full_report)->Unit(benchmark::kMillisecond);
+
+void report_with_reference(benchmark::State& state) {
+  if (!have_data(state)) return;
+  const auto soup = meshprep::read_soup(kBunny);
+  for (auto _ : state) benchmark::DoNotOptimize(meshprep::analyze_quality(soup, {}, &soup));
+}
+BENCHMARK(report_with_reference)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
