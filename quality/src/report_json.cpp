@@ -1,6 +1,7 @@
 // to_json: the machine interface of the quality report. Key names and order are stable.
 
 #include "meshprep/quality/report_writers.h"
+#include "meshprep/quality/json_values.h"
 
 #include <cmath>
 
@@ -9,17 +10,13 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// JSON has no inf/NaN: they become null.
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+Json number(double v) { return json_number(v); }
 
 Json optional_number(const std::optional<double>& v) { return v ? number(*v) : Json(nullptr); }
 
 Json point(const Vec3& p) { return Json::array({number(p.x()), number(p.y()), number(p.z())}); }
 
-Json distribution(const Distribution& d) {
-  return {{"min", number(d.min)}, {"mean", number(d.mean)}, {"p5", number(d.p5)},
-          {"p50", number(d.p50)}, {"p95", number(d.p95)}, {"max", number(d.max)}};
-}
+Json distribution(const Distribution& d) { return json_distribution(d); }
 
 Json intersecting_pairs(const QualityReport& report) {
   Json pairs = Json::array();

@@ -10,6 +10,10 @@ namespace {
 
 constexpr std::size_t kMaxListed = 100;  // offending faces listed per problem
 
+void list_face(std::vector<std::size_t>& list, std::size_t face) {
+  if (list.size() < kMaxListed) list.push_back(face);
+}
+
 bool repeats_index(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
 
 // One directed edge of a face, keyed by its undirected vertex pair.
@@ -54,7 +58,7 @@ void count_duplicates(const TriangleSoup& soup, Topology& topo) {
     std::sort(t.begin(), t.end());
     if (!seen.insert(t).second) {
       ++topo.duplicate_faces;
-      if (topo.duplicate_face_indices.size() < kMaxListed) topo.duplicate_face_indices.push_back(f);
+      list_face(topo.duplicate_face_indices, f);
     }
   }
 }
@@ -68,8 +72,12 @@ Topology analyze_topology(const TriangleSoup& soup) {
   std::size_t valid_faces = 0;
   for (const Triangle& t : soup.triangles) {
     for (auto v : t) used[v] = 1;
-    if (repeats_index(t)) ++topo.repeated_index_faces;
-    else ++valid_faces;
+    if (repeats_index(t)) {
+      list_face(topo.repeated_index_face_indices, static_cast<std::size_t>(&t - soup.triangles.data()));
+      ++topo.repeated_index_faces;
+    } else {
+      ++valid_faces;
+    }
   }
   topo.referenced_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
   topo.isolated_vertices = n_points - topo.referenced_vertices;
@@ -85,14 +93,16 @@ Topology analyze_topology(const TriangleSoup& soup) {
     ++topo.edges;
     if (uses == 1) {
       ++topo.border_edges;
+      list_face(topo.border_edge_faces, edges[i].face);
       border_vertices.unite(a, b);
       on_border[a] = on_border[b] = 1;
     } else if (uses > 2) {
       ++topo.non_manifold_edges;
-      for (std::size_t q = i; q < k && topo.non_manifold_edge_faces.size() < kMaxListed; ++q)
-        topo.non_manifold_edge_faces.push_back(edges[q].face);
+      for (std::size_t q = i; q < k; ++q) list_face(topo.non_manifold_edge_faces, edges[q].face);
     } else if (edges[i].forward == edges[i + 1].forward) {
       ++topo.inconsistent_edges;
+      list_face(topo.inconsistent_edge_faces, edges[i].face);
+      list_face(topo.inconsistent_edge_faces, edges[i + 1].face);
     }
     // Faces across an edge are connected, and their corners at the edge's ends lie in one fan.
     for (std::size_t q = i + 1; q < k; ++q) {
@@ -116,6 +126,11 @@ Topology analyze_topology(const TriangleSoup& soup) {
     }
   }
   topo.non_manifold_vertices = static_cast<std::size_t>(std::count(non_manifold_vertex.begin(), non_manifold_vertex.end(), 1));
+  for (std::uint32_t f = 0; f < n_faces && topo.non_manifold_vertices > 0; ++f) {
+    const Triangle& t = soup.triangles[f];
+    if (non_manifold_vertex[t[0]] || non_manifold_vertex[t[1]] || non_manifold_vertex[t[2]])
+      list_face(topo.non_manifold_vertex_faces, f);
+  }
   for (std::uint32_t f = 0; f < n_faces; ++f)
     if (!repeats_index(soup.triangles[f]) && faces.find(f) == f) ++topo.components;
   for (std::uint32_t v = 0; v < n_points; ++v)

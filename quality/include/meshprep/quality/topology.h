@@ -27,8 +27,13 @@ struct Topology {
   bool oriented = false;                ///< manifold and every interior edge used once in each direction
   long long euler_characteristic = 0;   ///< V - E + F over referenced vertices and non-degenerate faces
   std::optional<long long> genus;       ///< sum of genera, (2C - chi)/2, for closed manifold meshes
-  std::vector<std::size_t> non_manifold_edge_faces;  ///< faces on a non-manifold edge (first ones)
-  std::vector<std::size_t> duplicate_face_indices;   ///< the later copy of each duplicate (first ones)
+  // The first offending faces of each kind (at most 100 each), for diagnoses:
+  std::vector<std::size_t> border_edge_faces;        ///< faces with a border edge
+  std::vector<std::size_t> non_manifold_edge_faces;  ///< faces on a non-manifold edge
+  std::vector<std::size_t> non_manifold_vertex_faces;  ///< faces around a non-manifold vertex
+  std::vector<std::size_t> inconsistent_edge_faces;  ///< faces across an inconsistently oriented edge
+  std::vector<std::size_t> repeated_index_face_indices;  ///< faces naming a vertex twice
+  std::vector<std::size_t> duplicate_face_indices;   ///< the later copy of each duplicate
 };
 
 /// Analyse the connectivity of `soup`.
