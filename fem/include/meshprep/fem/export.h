@@ -1,0 +1,42 @@
+#pragma once
+/// \file export.h
+/// Writing tetrahedral meshes in the formats solvers read. The format follows the extension
+/// (case-insensitive):
+///
+/// | extension | format | tags |
+/// | --- | --- | --- |
+/// | .msh | Gmsh 4.1 (default) or 2.2, ASCII or binary | physical groups `region_<r>` (3D), `boundary_<t>` (2D) |
+/// | .vtu | VTK XML unstructured grid (ASCII), tets only | cell data `region` (Int32) |
+/// | .vtk | VTK legacy unstructured grid (ASCII 3.0), tets only | cell data `region` |
+/// | .mesh | Medit (INRIA), MeshVersionFormatted 2 | references on tetrahedra (region) and triangles (tag) |
+/// | .node | TetGen .node/.ele/.face (siblings derived from the name) | attribute on .ele, marker on .face |
+/// | .inp | Abaqus/CalculiX, C3D4 | ELSET `REGION_<r>`; NSET `BOUNDARY_<t>`, element-face *SURFACE `SURF_<t>` |
+///
+/// Node and element numbers are 1-based (0-based point ids in the VTK formats); tet t is element
+/// t + 1 where a format numbers elements. Coordinates are written with round-trip precision.
+///
+/// Every tet is written positively oriented in each format's own node order. Writes are atomic
+/// (a temporary file renamed into place; for .node all three files are written before renaming).
+
+#include "meshprep/fem/tet_mesh.h"
+
+#include <string>
+
+namespace meshprep {
+
+enum class MshVersion { V41, V22 };
+
+struct TetExportOptions {
+  MshVersion msh_version = MshVersion::V41;  ///< .msh only
+  bool binary = false;                       ///< .msh only
+};
+
+/// Write `mesh` to `path` (format from the extension).
+/// \throws InvalidInput for an unknown extension (the message lists the supported ones), or a
+///         malformed mesh (no tets, per-element arrays of the wrong size, an index out of range or
+///         repeated within an element, a region or tag < 1, a non-finite coordinate; for .inp also
+///         a boundary face that is not an outward face of any tet);
+///         IoError if a file cannot be written (nothing is left behind).
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {});
+
+}  // namespace meshprep

@@ -1,0 +1,127 @@
+// write_tet_mesh: validates the mesh once, then dispatches on the extension to a writer in
+// export_<format>.cpp.
+#include "meshprep/fem/export.h"
+
+#include "exporters.h"
+#include "meshprep/core/errors.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+
+namespace meshprep {
+namespace {
+
+using Writer = void (*)(const TetMesh&, const std::string&, const TetExportOptions&);
+
+struct Format {
+  const char* extension;
+  Writer write;
+};
+
+const std::array<Format, 6> formats{{
+    {".msh", [](const TetMesh& m, const std::string& p, const TetExportOptions& o) { detail::write_gmsh(m, p, o); }},
+    {".vtu", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtu(m, p); }},
+    {".vtk", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtk_legacy(m, p); }},
+    {".mesh", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_medit(m, p); }},
+    {".node", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_tetgen(m, p); }},
+    {".inp", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_abaqus(m, p); }},
+}};
+
+std::string lowercase_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+const Format& format_for(const std::string& path) {
+  const std::string extension = lowercase_extension(path);
+  for (const Format& format : formats)
+    if (extension == format.extension) return format;
+  std::string supported;
+  for (const Format& format : formats) supported += std::string(supported.empty() ? "" : ", ") + format.extension;
+  throw InvalidInput(path + ": unknown tetrahedral mesh format '" + extension + "' (supported: " + supported + ")");
+}
+
+template <std::size_t N>
+void check_indices(const std::string& path, const char* what, std::size_t element,
+                   const std::array<std::uint32_t, N>& vertices, std::size_t num_points) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (vertices[i] >= num_points)
+      throw InvalidInput(path + ": cannot export: " + what + " " + std::to_string(element) + " has vertex index " +
+                         std::to_string(vertices[i]) + " but the mesh has " + std::to_string(num_points) + " points");
+    for (std::size_t j = 0; j < i; ++j)
+      if (vertices[i] == vertices[j])
+        throw InvalidInput(path + ": cannot export: " + what + " " + std::to_string(element) + " repeats vertex " +
+                           std::to_string(vertices[i]));
+  }
+}
+
+void check_tags(const std::string& path, const char* what, const std::vector<int>& tags) {
+  const auto bad = std::find_if(tags.begin(), tags.end(), [](int tag) { return tag < 1; });
+  if (bad != tags.end())
+    throw InvalidInput(path + ": cannot export: " + what + " " + std::to_string(*bad) + " (must be >= 1)");
+}
+
+// Structural checks only: orientation is the TetMesh invariant (tets positive, faces outward).
+void validate(const TetMesh& mesh, const std::string& path) {
+  if (mesh.tets.empty()) throw InvalidInput(path + ": cannot export: the mesh has no tetrahedra");
+  if (mesh.tets.size() != mesh.tet_regions.size())
+    throw InvalidInput(path + ": cannot export: " + std::to_string(mesh.tets.size()) + " tets but " +
+                       std::to_string(mesh.tet_regions.size()) + " tet regions");
+  if (mesh.boundary_faces.size() != mesh.boundary_tags.size())
+    throw InvalidInput(path + ": cannot export: " + std::to_string(mesh.boundary_faces.size()) +
+                       " boundary faces but " + std::to_string(mesh.boundary_tags.size()) + " boundary tags");
+  // Every format numbers nodes and elements with (at most) 32-bit signed integers.
+  constexpr auto max_id = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+  if (mesh.points.size() >= max_id || mesh.tets.size() + mesh.boundary_faces.size() >= max_id)
+    throw InvalidInput(path + ": cannot export: too many points or elements for 32-bit ids");
+  for (std::size_t p = 0; p < mesh.points.size(); ++p)
+    if (!mesh.points[p].allFinite())
+      throw InvalidInput(path + ": cannot export: point " + std::to_string(p) + " has a non-finite coordinate");
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) check_indices(path, "tet", t, mesh.tets[t], mesh.points.size());
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+    check_indices(path, "boundary face", f, mesh.boundary_faces[f], mesh.points.size());
+  check_tags(path, "tet region", mesh.tet_regions);
+  check_tags(path, "boundary tag", mesh.boundary_tags);
+}
+
+}  // namespace
+
+namespace detail {
+
+void write_real(std::ostream& out, double value) {
+  std::array<char, 32> buffer;  // the longest shortest-round-trip double is 24 characters
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  out.write(buffer.data(), result.ptr - buffer.data());
+}
+
+void write_point(std::ostream& out, const Vec3& p, const char* separator) {
+  write_real(out, p.x());
+  out << separator;
+  write_real(out, p.y());
+  out << separator;
+  write_real(out, p.z());
+}
+
+std::vector<int> distinct_tags(const std::vector<int>& tags) {
+  std::vector<int> distinct = tags;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  return distinct;
+}
+
+}  // namespace detail
+
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options) {
+  const Format& format = format_for(path);
+  validate(mesh, path);
+  format.write(mesh, path, options);
+}
+
+}  // namespace meshprep

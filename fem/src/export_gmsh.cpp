@@ -1,0 +1,305 @@
+// Gmsh .msh 4.1 and 2.2, ASCII and binary (Gmsh reference manual, "MSH file format" and "MSH file
+// format version 2 (Legacy)"; https://gmsh.info/doc/texinfo/gmsh.html#MSH-file-format).
+//
+// Orientation: Gmsh's reference 4-node tetrahedron (element type 4) is (0,0,0) (1,0,0) (0,1,0)
+// (0,0,1), i.e. positive volume in TetMesh's sense, so tets are written in their own order.
+// Triangles (element type 2) keep their outward orientation.
+//
+// Tags: physical and elementary tags are the region for tets and the boundary tag for triangles.
+// In 4.1 there is one discrete volume entity per region and one discrete surface entity per
+// boundary tag (entity tag = physical tag, no bounding entities); in 2.2 each element carries
+// the two tags (physical, elementary). Element tags: tet t is t + 1, boundary face f is T + f + 1.
+#include "exporters.h"
+
+#include "meshprep/core/atomic_file.h"
+
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace meshprep::detail {
+namespace {
+
+constexpr int gmsh_triangle = 2;
+constexpr int gmsh_tetrahedron = 4;
+
+// The numbers of a section: text separated by spaces (ASCII), or raw native-endian values
+// (binary: int = 4 bytes, size_t = 8 bytes as declared by data-size 8, double = 8 bytes; the int 1
+// after the header lets readers check the byte order).
+class MshStream {
+ public:
+  MshStream(std::ostream& out, bool binary) : out_(out), binary_(binary) {}
+
+  void size(std::size_t value) { put(static_cast<std::uint64_t>(value)); }
+  void integer(std::int64_t value) { put(static_cast<std::int32_t>(value)); }
+  void real(double value) {
+    if (binary_) return put(value);
+    separate();
+    write_real(out_, value);
+  }
+  void end_line() {
+    if (!binary_) out_ << '\n';
+    line_start_ = true;
+  }
+  // Binary data is followed by a newline before the section's end marker.
+  void end_section(const char* name) {
+    if (binary_) out_ << '\n';
+    out_ << "$End" << name << '\n';
+  }
+
+ private:
+  template <class T>
+  void put(T value) {
+    if (binary_) {
+      char bytes[sizeof(T)];
+      std::memcpy(bytes, &value, sizeof(T));
+      out_.write(bytes, sizeof(T));
+    } else {
+      separate();
+      out_ << value;
+    }
+  }
+  void separate() {
+    if (!line_start_) out_ << ' ';
+    line_start_ = false;
+  }
+
+  std::ostream& out_;
+  bool binary_;
+  bool line_start_ = true;
+};
+
+void write_header(std::ostream& out, const char* version, bool binary) {
+  out << "$MeshFormat\n" << version << (binary ? " 1 8\n" : " 0 8\n");
+  if (binary) {
+    MshStream(out, true).integer(1);
+    out << '\n';
+  }
+  out << "$EndMeshFormat\n";
+}
+
+// Always ASCII, also in binary files.
+void write_physical_names(std::ostream& out, const TetMesh& mesh) {
+  const std::vector<int> surfaces = distinct_tags(mesh.boundary_tags);
+  const std::vector<int> volumes = distinct_tags(mesh.tet_regions);
+  out << "$PhysicalNames\n" << surfaces.size() + volumes.size() << '\n';
+  for (int tag : surfaces) out << "2 " << tag << " \"boundary_" << tag << "\"\n";
+  for (int region : volumes) out << "3 " << region << " \"region_" << region << "\"\n";
+  out << "$EndPhysicalNames\n";
+}
+
+// ---- MSH 4.1 ----
+
+// A discrete entity: a surface (one boundary tag) or a volume (one region).
+struct Entity {
+  int dim;
+  int tag;
+  std::vector<std::size_t> elements;  // boundary face or tet indices
+  std::vector<std::uint32_t> nodes;   // the nodes classified on this entity
+  Eigen::AlignedBox3d box;
+};
+
+template <std::size_t N>
+void add_elements(std::vector<Entity>& entities, const std::map<int, std::size_t>& entity_of,
+                  const std::vector<std::array<std::uint32_t, N>>& elements, const std::vector<int>& tags,
+                  const TetMesh& mesh) {
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    Entity& entity = entities[entity_of.at(tags[e])];
+    entity.elements.push_back(e);
+    for (std::uint32_t v : elements[e]) entity.box.extend(mesh.points[v]);
+  }
+}
+
+// Surfaces (ascending boundary tag) then volumes (ascending region). Each node is classified on
+// the surface of the first boundary face using it, else the volume of the first tet using it
+// (nodes used by nothing go to the first volume).
+std::vector<Entity> make_entities(const TetMesh& mesh) {
+  std::vector<Entity> entities;
+  std::map<int, std::size_t> surface_of;
+  std::map<int, std::size_t> volume_of;
+  for (int tag : distinct_tags(mesh.boundary_tags)) {
+    surface_of[tag] = entities.size();
+    entities.push_back({2, tag, {}, {}, {}});
+  }
+  for (int region : distinct_tags(mesh.tet_regions)) {
+    volume_of[region] = entities.size();
+    entities.push_back({3, region, {}, {}, {}});
+  }
+  add_elements(entities, surface_of, mesh.boundary_faces, mesh.boundary_tags, mesh);
+  add_elements(entities, volume_of, mesh.tets, mesh.tet_regions, mesh);
+
+  const std::size_t unclassified = entities.size();
+  std::vector<std::size_t> node_entity(mesh.points.size(), unclassified);
+  auto classify = [&](const auto& vertices, std::size_t entity) {
+    for (std::uint32_t v : vertices)
+      if (node_entity[v] == unclassified) node_entity[v] = entity;
+  };
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+    classify(mesh.boundary_faces[f], surface_of.at(mesh.boundary_tags[f]));
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) classify(mesh.tets[t], volume_of.at(mesh.tet_regions[t]));
+  for (std::uint32_t v = 0; v < mesh.points.size(); ++v) {
+    Entity& entity = entities[node_entity[v] == unclassified ? surface_of.size() : node_entity[v]];
+    entity.nodes.push_back(v);
+  }
+  return entities;
+}
+
+void write_entities_41(MshStream& s, const std::vector<Entity>& entities, std::size_t num_surfaces) {
+  s.size(0);  // points
+  s.size(0);  // curves
+  s.size(num_surfaces);
+  s.size(entities.size() - num_surfaces);
+  s.end_line();
+  for (const Entity& entity : entities) {
+    // tag, bounding box, physical tags, bounding entities (none: discrete entities)
+    s.integer(entity.tag);
+    for (double c : {entity.box.min().x(), entity.box.min().y(), entity.box.min().z(), entity.box.max().x(),
+                     entity.box.max().y(), entity.box.max().z()})
+      s.real(c);
+    s.size(1);
+    s.integer(entity.tag);
+    s.size(0);
+    s.end_line();
+  }
+}
+
+void write_nodes_41(MshStream& s, const TetMesh& mesh, const std::vector<Entity>& entities) {
+  std::size_t num_blocks = 0;
+  for (const Entity& entity : entities) num_blocks += entity.nodes.empty() ? 0 : 1;
+  s.size(num_blocks);
+  s.size(mesh.points.size());
+  s.size(1);
+  s.size(mesh.points.size());
+  s.end_line();
+  for (const Entity& entity : entities) {
+    if (entity.nodes.empty()) continue;
+    s.integer(entity.dim);
+    s.integer(entity.tag);
+    s.integer(0);  // no parametric coordinates
+    s.size(entity.nodes.size());
+    s.end_line();
+    for (std::uint32_t v : entity.nodes) {
+      s.size(v + std::size_t{1});
+      s.end_line();
+    }
+    for (std::uint32_t v : entity.nodes) {
+      for (int c = 0; c < 3; ++c) s.real(mesh.points[v][c]);
+      s.end_line();
+    }
+  }
+}
+
+template <std::size_t N>
+void write_element_block_41(MshStream& s, const Entity& entity, int type, std::size_t first_tag,
+                            const std::vector<std::array<std::uint32_t, N>>& elements) {
+  s.integer(entity.dim);
+  s.integer(entity.tag);
+  s.integer(type);
+  s.size(entity.elements.size());
+  s.end_line();
+  for (std::size_t e : entity.elements) {
+    s.size(first_tag + e);
+    for (std::uint32_t v : elements[e]) s.size(v + std::size_t{1});
+    s.end_line();
+  }
+}
+
+void write_elements_41(MshStream& s, const TetMesh& mesh, const std::vector<Entity>& entities) {
+  const std::size_t num_elements = mesh.tets.size() + mesh.boundary_faces.size();
+  s.size(entities.size());
+  s.size(num_elements);
+  s.size(1);
+  s.size(num_elements);
+  s.end_line();
+  for (const Entity& entity : entities) {
+    if (entity.dim == 2)
+      write_element_block_41(s, entity, gmsh_triangle, mesh.tets.size() + 1, mesh.boundary_faces);
+    else
+      write_element_block_41(s, entity, gmsh_tetrahedron, 1, mesh.tets);
+  }
+}
+
+void write_msh41(std::ostream& out, const TetMesh& mesh, bool binary) {
+  const std::vector<Entity> entities = make_entities(mesh);
+  const std::size_t num_surfaces = distinct_tags(mesh.boundary_tags).size();
+  MshStream s(out, binary);
+  write_header(out, "4.1", binary);
+  write_physical_names(out, mesh);
+  out << "$Entities\n";
+  write_entities_41(s, entities, num_surfaces);
+  s.end_section("Entities");
+  out << "$Nodes\n";
+  write_nodes_41(s, mesh, entities);
+  s.end_section("Nodes");
+  out << "$Elements\n";
+  write_elements_41(s, mesh, entities);
+  s.end_section("Elements");
+}
+
+// ---- MSH 2.2 ----
+// The counts after $Nodes and $Elements are ASCII lines in both modes. ASCII element lines are
+// "number type num-tags tags... nodes..."; binary data is grouped under a header
+// (type, number of elements, num-tags) and each element is "number tags... nodes...".
+
+void write_nodes_22(std::ostream& out, MshStream& s, const TetMesh& mesh) {
+  out << "$Nodes\n" << mesh.points.size() << '\n';
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    s.integer(static_cast<std::int64_t>(v + 1));
+    for (int c = 0; c < 3; ++c) s.real(mesh.points[v][c]);
+    s.end_line();
+  }
+  s.end_section("Nodes");
+}
+
+template <std::size_t N>
+void write_element_group_22(MshStream& s, bool binary, int type, std::size_t first_number,
+                            const std::vector<std::array<std::uint32_t, N>>& elements, const std::vector<int>& tags) {
+  if (elements.empty()) return;
+  constexpr int num_tags = 2;  // physical, elementary
+  if (binary) {
+    s.integer(type);
+    s.integer(static_cast<std::int64_t>(elements.size()));
+    s.integer(num_tags);
+  }
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    s.integer(static_cast<std::int64_t>(first_number + e));
+    if (!binary) {
+      s.integer(type);
+      s.integer(num_tags);
+    }
+    s.integer(tags[e]);
+    s.integer(tags[e]);
+    for (std::uint32_t v : elements[e]) s.integer(std::int64_t{v} + 1);
+    s.end_line();
+  }
+}
+
+void write_msh22(std::ostream& out, const TetMesh& mesh, bool binary) {
+  MshStream s(out, binary);
+  write_header(out, "2.2", binary);
+  write_physical_names(out, mesh);
+  write_nodes_22(out, s, mesh);
+  out << "$Elements\n" << mesh.tets.size() + mesh.boundary_faces.size() << '\n';
+  write_element_group_22(s, binary, gmsh_tetrahedron, 1, mesh.tets, mesh.tet_regions);
+  write_element_group_22(s, binary, gmsh_triangle, mesh.tets.size() + 1, mesh.boundary_faces, mesh.boundary_tags);
+  s.end_section("Elements");
+}
+
+}  // namespace
+
+void write_gmsh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options) {
+  write_file_atomically(
+      path,
+      [&](std::ostream& out) {
+        if (options.msh_version == MshVersion::V22)
+          write_msh22(out, mesh, options.binary);
+        else
+          write_msh41(out, mesh, options.binary);
+      },
+      options.binary);
+}
+
+}  // namespace meshprep::detail

@@ -1,0 +1,352 @@
+// The tetrahedral mesh exporters: third-party read-back (meshio, gmsh) through fem_readback.py,
+// checks of our own output, and the error contract (InvalidInput / IoError, no partial files).
+#include "meshprep/core/errors.h"
+#include "meshprep/fem/export.h"
+#include "tet_test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace meshprep {
+namespace {
+
+namespace fs = std::filesystem;
+
+// cube_tets(2): 27 points, 48 tets, 48 boundary faces (8 per side), volume 1.
+constexpr std::size_t kPoints = 27;
+constexpr std::size_t kTets = 48;
+constexpr std::size_t kFaces = 48;
+
+bool succeeds(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// The first Python 3 that can import meshio: the one on PATH, else the system one (a pyenv or
+// venv python3 on PATH does not see Debian's python3-meshio).
+std::string python_with_meshio() {
+  for (const char* python : {"python3", "/usr/bin/python3"})
+    if (succeeds(std::string(python) + " -c 'import meshio, numpy' >/dev/null 2>&1")) return python;
+  return "";
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream content;
+  content << in.rdbuf();
+  return content.str();
+}
+
+std::vector<std::string> lines_of(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> fields_of(const std::string& line, char separator = ' ') {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, separator);)
+    if (!field.empty()) fields.push_back(field);
+  return fields;
+}
+
+// Each test gets a fresh, empty directory that is removed afterwards.
+class FemExportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static int counter = 0;
+    dir_ = fs::temp_directory_path() /
+           ("meshprep-fem-export-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::set<std::string> directory_entries() const {
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) names.insert(entry.path().filename().string());
+    return names;
+  }
+
+  // Every format and variant, one file each (the .node also writes .ele and .face).
+  void write_all_formats(const TetMesh& mesh) const {
+    write_tet_mesh(mesh, path("cube_v41_ascii.msh"));
+    write_tet_mesh(mesh, path("cube_v41_binary.msh"), {MshVersion::V41, true});
+    write_tet_mesh(mesh, path("cube_v22_ascii.msh"), {MshVersion::V22, false});
+    write_tet_mesh(mesh, path("cube_v22_binary.msh"), {MshVersion::V22, true});
+    for (const char* extension : {".vtu", ".vtk", ".mesh", ".node", ".inp"})
+      write_tet_mesh(mesh, path(std::string("cube") + extension));
+  }
+
+  // fem_readback.py on the whole directory; the expected volume is 1.
+  std::string readback_command(const std::string& python, std::size_t points, std::size_t tets) const {
+    return python + " " + MESHPREP_READBACK_SCRIPT + " " + dir_.string() + " " + std::to_string(points) + " " +
+           std::to_string(tets) + " 1.0";
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(FemExportTest, ThirdPartyReadersReadEveryFormat) {
+  const std::string python = python_with_meshio();
+  if (python.empty()) GTEST_SKIP() << "no python3 with meshio and numpy (apt-get install python3-meshio)";
+  if (!succeeds("command -v gmsh >/dev/null 2>&1")) GTEST_SKIP() << "gmsh is not on PATH (apt-get install gmsh)";
+  write_all_formats(test::cube_tets(2));
+  EXPECT_TRUE(succeeds(readback_command(python, kPoints, kTets)));
+}
+
+TEST_F(FemExportTest, WritesEveryFileAndNothingElse) {
+  write_all_formats(test::cube_tets(2));
+  const std::set<std::string> expected{"cube_v41_ascii.msh", "cube_v41_binary.msh", "cube_v22_ascii.msh",
+                                       "cube_v22_binary.msh", "cube.vtu", "cube.vtk", "cube.mesh", "cube.node",
+                                       "cube.ele", "cube.face", "cube.inp"};
+  EXPECT_EQ(directory_entries(), expected);
+}
+
+TEST_F(FemExportTest, Msh22AsciiHeaderCountsAndTags) {
+  write_tet_mesh(test::cube_tets(2), path("cube.msh"), {MshVersion::V22, false});
+  const std::vector<std::string> lines = lines_of(path("cube.msh"));
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "$MeshFormat");
+  EXPECT_EQ(lines[1], "2.2 0 8");
+  EXPECT_EQ(lines[2], "$EndMeshFormat");
+  std::size_t section = 0;
+  for (; section < lines.size() && lines[section] != "$Nodes"; ++section) {
+  }
+  ASSERT_LT(section + 1, lines.size());
+  EXPECT_EQ(lines[section + 1], std::to_string(kPoints));
+  for (; section < lines.size() && lines[section] != "$Elements"; ++section) {
+  }
+  ASSERT_LT(section + 1, lines.size());
+  ASSERT_EQ(lines[section + 1], std::to_string(kTets + kFaces));
+  std::map<std::string, std::size_t> per_type;  // element type -> count
+  std::set<std::string> tet_tags, triangle_tags;
+  for (std::size_t e = 0; e < kTets + kFaces; ++e) {
+    const std::vector<std::string> f = fields_of(lines.at(section + 2 + e));
+    ASSERT_GE(f.size(), 5u);
+    EXPECT_EQ(f[0], std::to_string(e + 1));
+    EXPECT_EQ(f[2], "2");     // two tags
+    EXPECT_EQ(f[3], f[4]);    // physical == elementary
+    ++per_type[f[1]];
+    (f[1] == "4" ? tet_tags : triangle_tags).insert(f[3]);
+    EXPECT_EQ(f.size(), f[1] == "4" ? 9u : 8u);
+  }
+  EXPECT_EQ(per_type["4"], kTets);
+  EXPECT_EQ(per_type["2"], kFaces);
+  EXPECT_EQ(tet_tags, (std::set<std::string>{"1", "2"}));
+  EXPECT_EQ(triangle_tags, (std::set<std::string>{"1", "2", "3", "4", "5", "6"}));
+  EXPECT_EQ(lines.at(section + 2 + kTets + kFaces), "$EndElements");
+}
+
+TEST_F(FemExportTest, Msh41BinaryHeaderHasTheEndiannessInt) {
+  write_tet_mesh(test::cube_tets(2), path("cube.msh"), {MshVersion::V41, true});
+  const std::string content = read_text(path("cube.msh"));
+  const std::string header = "$MeshFormat\n4.1 1 8\n";
+  ASSERT_EQ(content.compare(0, header.size(), header), 0);
+  std::int32_t one = 0;
+  std::memcpy(&one, content.data() + header.size(), sizeof one);
+  EXPECT_EQ(one, 1);
+  EXPECT_EQ(content.compare(header.size() + 4, 16, "\n$EndMeshFormat\n"), 0);
+  EXPECT_NE(content.find("$PhysicalNames\n8\n2 1 \"boundary_1\"\n"), std::string::npos);
+  EXPECT_NE(content.find("3 2 \"region_2\"\n$EndPhysicalNames\n$Entities\n"), std::string::npos);
+}
+
+// Parses the .inp: C3D4 elements, sets, and checks that every *SURFACE face lies on its side of
+// the cube (tag 1 x=0, 2 x=1, 3 y=0, 4 y=1, 5 z=0, 6 z=1), which validates the S1..S4 numbering.
+TEST_F(FemExportTest, AbaqusSetsAndElementFaceSurfaces) {
+  const TetMesh mesh = test::cube_tets(2);
+  write_tet_mesh(mesh, path("cube.inp"));
+  const std::vector<std::string> lines = lines_of(path("cube.inp"));
+  std::map<std::string, std::vector<std::vector<std::string>>> blocks;  // keyword line -> data lines
+  std::string keyword;
+  for (const std::string& line : lines) {
+    if (line.rfind('*', 0) == 0) {
+      keyword = line;
+      blocks[keyword];
+      continue;
+    }
+    std::vector<std::string> fields = fields_of(line, ',');
+    EXPECT_LE(fields.size(), 16u) << line;
+    blocks[keyword].push_back(fields);
+  }
+  ASSERT_TRUE(blocks.count("*HEADING"));
+  ASSERT_EQ(blocks["*NODE"].size(), kPoints);
+  std::map<int, std::array<int, 4>> elements;  // 1-based ids
+  for (int region : {1, 2}) {
+    const std::string element_keyword = "*ELEMENT, TYPE=C3D4, ELSET=REGION_" + std::to_string(region);
+    ASSERT_TRUE(blocks.count(element_keyword)) << element_keyword;
+    for (const auto& f : blocks[element_keyword]) {
+      ASSERT_EQ(f.size(), 5u);
+      elements[std::stoi(f[0])] = {std::stoi(f[1]), std::stoi(f[2]), std::stoi(f[3]), std::stoi(f[4])};
+      EXPECT_EQ(mesh.tet_regions.at(std::stoul(f[0]) - 1), region);
+    }
+  }
+  ASSERT_EQ(elements.size(), kTets);
+  const int local_faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};  // S1..S4
+  for (int tag = 1; tag <= 6; ++tag) {
+    const std::string nset = "*NSET, NSET=BOUNDARY_" + std::to_string(tag);
+    ASSERT_TRUE(blocks.count(nset)) << nset;
+    std::size_t num_nodes = 0;
+    for (const auto& f : blocks[nset]) num_nodes += f.size();
+    EXPECT_EQ(num_nodes, 9u);  // a 3 x 3 grid of nodes per side
+    const std::string surface = "*SURFACE, NAME=SURF_" + std::to_string(tag) + ", TYPE=ELEMENT";
+    ASSERT_TRUE(blocks.count(surface)) << surface;
+    ASSERT_EQ(blocks[surface].size(), 8u);
+    const int axis = (tag - 1) / 2;
+    const double side = (tag - 1) % 2;
+    for (const auto& f : blocks[surface]) {
+      ASSERT_EQ(f.size(), 2u);
+      const int face = std::stoi(f[1].substr(f[1].find('S') + 1)) - 1;
+      ASSERT_TRUE(face >= 0 && face < 4) << f[1];
+      const std::array<int, 4>& element = elements.at(std::stoi(f[0]));
+      for (int corner : local_faces[face])
+        EXPECT_EQ(mesh.points.at(element[corner] - 1)[axis], side) << "SURF_" << tag << ": " << f[0] << ", " << f[1];
+    }
+  }
+}
+
+TEST_F(FemExportTest, TetgenFilesAndCounts) {
+  write_tet_mesh(test::cube_tets(2), path("cube.node"));
+  const std::vector<std::pair<std::string, std::string>> expected{
+      {"cube.node", "27 3 0 0"}, {"cube.ele", "48 4 1"}, {"cube.face", "48 1"}};
+  const std::vector<std::size_t> fields_per_line{4, 6, 5};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const std::vector<std::string> lines = lines_of(path(expected[i].first));
+    ASSERT_GE(lines.size(), 2u) << expected[i].first;
+    EXPECT_EQ(lines[0], "# written by meshprep");
+    EXPECT_EQ(lines[1], expected[i].second);
+    const std::size_t count = std::stoul(lines[1]);
+    ASSERT_EQ(lines.size(), count + 2) << expected[i].first;
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::vector<std::string> f = fields_of(lines[k + 2]);
+      EXPECT_EQ(f.size(), fields_per_line[i]) << lines[k + 2];
+      EXPECT_EQ(f.at(0), std::to_string(k + 1));  // 1-based
+    }
+  }
+}
+
+TEST_F(FemExportTest, CoordinatesRoundTripExactly) {
+  TetMesh mesh = test::cube_tets(1, 1.0 / 3.0);
+  for (Vec3& p : mesh.points) p += Vec3(0.1, -2.5e-7, 1e5);
+  write_tet_mesh(mesh, path("cube.node"));
+  const std::vector<std::string> lines = lines_of(path("cube.node"));
+  ASSERT_EQ(lines.size(), mesh.points.size() + 2);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    const std::vector<std::string> f = fields_of(lines[v + 2]);
+    ASSERT_EQ(f.size(), 4u);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(std::strtod(f[c + 1].c_str(), nullptr), mesh.points[v][c]) << lines[v + 2];
+  }
+}
+
+TEST_F(FemExportTest, UnknownExtensionListsTheSupportedOnes) {
+  for (const char* name : {"cube.stl", "cube", "cube.ele"}) {
+    try {
+      write_tet_mesh(test::cube_tets(1), path(name));
+      ADD_FAILURE() << name << ": no exception";
+    } catch (const InvalidInput& e) {
+      const std::string message = e.what();
+      for (const char* extension : {".msh", ".vtu", ".vtk", ".mesh", ".node", ".inp"})
+        EXPECT_NE(message.find(extension), std::string::npos) << message;
+    }
+  }
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+TEST_F(FemExportTest, ExtensionIsCaseInsensitive) {
+  write_tet_mesh(test::cube_tets(1), path("CUBE.MSH"));
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"CUBE.MSH"}));
+}
+
+TEST_F(FemExportTest, MissingDirectoryIsAnIoErrorAndWritesNothing) {
+  for (const char* name : {"cube.msh", "cube.vtu", "cube.vtk", "cube.mesh", "cube.node", "cube.inp"})
+    EXPECT_THROW(write_tet_mesh(test::cube_tets(1), path(std::string("missing/") + name)), IoError) << name;
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+// The .face cannot be renamed into place (a directory has its name): no .node or .ele appears
+// and no temporary file is left.
+TEST_F(FemExportTest, TetgenFailureLeavesNoPartialFileSet) {
+  fs::create_directory(path("cube.face"));
+  EXPECT_THROW(write_tet_mesh(test::cube_tets(1), path("cube.node")), IoError);
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"cube.face"}));
+}
+
+TEST_F(FemExportTest, MalformedMeshesAreInvalidInput) {
+  auto expect_invalid = [&](TetMesh mesh, const char* what) {
+    for (const char* name : {"m.msh", "m.vtu", "m.vtk", "m.mesh", "m.node", "m.inp"})
+      EXPECT_THROW(write_tet_mesh(mesh, path(name)), InvalidInput) << what << " " << name;
+  };
+  const TetMesh good = test::cube_tets(1);
+  TetMesh m = good;
+  m.tets[3][2] = static_cast<std::uint32_t>(m.points.size());
+  expect_invalid(m, "tet index out of range");
+  m = good;
+  m.boundary_faces[5][0] = 1000;
+  expect_invalid(m, "face index out of range");
+  m = good;
+  m.tet_regions.pop_back();
+  expect_invalid(m, "fewer regions than tets");
+  m = good;
+  m.boundary_tags.push_back(1);
+  expect_invalid(m, "more tags than faces");
+  m = good;
+  m.tets.clear();
+  m.tet_regions.clear();
+  expect_invalid(m, "no tets");
+  m = good;
+  m.tets[0][1] = m.tets[0][0];
+  expect_invalid(m, "repeated vertex");
+  m = good;
+  m.tet_regions[2] = 0;
+  expect_invalid(m, "region 0");
+  m = good;
+  m.boundary_tags[2] = -1;
+  expect_invalid(m, "negative tag");
+  m = good;
+  m.points[4].y() = std::nan("");
+  expect_invalid(m, "NaN coordinate");
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+// The Abaqus surface needs the face's owning tet: an inward (or interior-less) face is rejected.
+TEST_F(FemExportTest, AbaqusRejectsAFaceNoTetOwns) {
+  TetMesh mesh = test::cube_tets(1);
+  std::swap(mesh.boundary_faces[0][1], mesh.boundary_faces[0][2]);
+  EXPECT_THROW(write_tet_mesh(mesh, path("cube.inp")), InvalidInput);
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+TEST_F(FemExportTest, MeshWithoutBoundaryFacesIsWritten) {
+  TetMesh mesh = test::cube_tets(1);
+  mesh.boundary_faces.clear();
+  mesh.boundary_tags.clear();
+  write_all_formats(mesh);
+  const std::vector<std::string> face = lines_of(path("cube.face"));
+  ASSERT_EQ(face.size(), 2u);
+  EXPECT_EQ(face[1], "0 1");
+  const std::string python = python_with_meshio();
+  if (!python.empty() && succeeds("command -v gmsh >/dev/null 2>&1")) {
+    EXPECT_TRUE(succeeds(readback_command(python, 8, 6)));
+  }
+}
+
+}  // namespace
+}  // namespace meshprep
