@@ -1,0 +1,41 @@
+#pragma once
+/// \file readiness.h
+/// Is a surface ready for tetrahedralisation? TetGen needs a closed, manifold, consistently
+/// oriented surface without degenerate or duplicate faces and without self-intersections; when it
+/// gets anything else it fails with a bare code (or, on open surfaces, "succeeds" with zero tets).
+/// This check names each problem, how many, the first offending faces and what to do.
+
+#include "meshprep/core/mesh.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace meshprep {
+
+struct ReadinessProblem {
+  std::string check;   ///< "closed", "manifold", "oriented", "degenerate_faces", "duplicate_faces", "self_intersections"
+  std::size_t count = 0;  ///< how many edges/vertices/faces/pairs
+  std::string what;    ///< one line: the problem in words with the count
+  std::string hint;    ///< what to do about it
+  std::vector<std::size_t> faces;  ///< the first offending face indices (at most 100)
+};
+
+struct Readiness {
+  bool ready() const { return problems.empty(); }
+  std::vector<ReadinessProblem> problems;
+  bool inward_oriented = false;  ///< consistently oriented but enclosing negative volume (not a problem: flipped)
+};
+
+/// Check `surface` for tetrahedralisation.
+Readiness check_fem_readiness(const TriangleSoup& surface);
+
+/// The offending faces of every problem as a small soup (their vertices renumbered), to open
+/// next to the input in a viewer.
+TriangleSoup diagnosis_mesh(const TriangleSoup& surface, const Readiness& readiness);
+
+/// {"ready": bool, "problems": [{check, count, what, hint, faces}]}.
+nlohmann::ordered_json to_json(const Readiness& readiness);
+
+}  // namespace meshprep

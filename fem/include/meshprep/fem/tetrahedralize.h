@@ -1,0 +1,52 @@
+#pragma once
+/// \file tetrahedralize.h
+/// Quality tetrahedralisation of a closed surface with TetGen (Debian's libtet 1.5), isolated in
+/// a child process so that a TetGen crash or abort becomes an error, never the end of the caller.
+
+#include "meshprep/core/errors.h"
+#include "meshprep/core/mesh.h"
+#include "meshprep/fem/tet_mesh.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace meshprep {
+
+struct TetParams {
+  double radius_edge = 1.414;  ///< TetGen -q bound on circumradius / shortest edge (>= 1; 0 = no refinement)
+  double min_dihedral_deg = 0;  ///< TetGen -q/DEG target for the smallest dihedral angle (0 = TetGen's default)
+  double max_volume = 0;        ///< TetGen -a: largest tet volume, absolute (0 = no bound)
+  double max_volume_relative = 0;  ///< same, as a fraction of the enclosed volume (0 = no bound)
+  bool keep_surface = false;    ///< TetGen -Y: the boundary keeps exactly the input triangles
+};
+
+/// A piecewise-linear complex for TetGen: planar polygonal facets with boundary tags.
+struct SurfacePlc {
+  std::vector<Vec3> points;
+  std::vector<std::vector<std::uint32_t>> facets;  ///< each a planar polygon, 3 or more corners
+  std::vector<int> tags;                           ///< one per facet, >= 1
+};
+
+/// A TetGen failure, with TetGen's code (1 memory, 2 internal, 3 self-intersection, 4 tiny
+/// feature, 5 facets too close, 10 input; 0 no tets; -1 crashed) and a hint in the message.
+class TetgenError : public Error {
+ public:
+  TetgenError(int code, const std::string& message) : Error(message), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
+
+/// Tetrahedralise a PLC (no readiness check: the caller vouches for it).
+/// \throws TetgenError.
+TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params);
+
+/// The TetGen switches for `params` ("pzQ" + q, a, Y), given the enclosed volume.
+std::string tetgen_switches(const TetParams& params, double enclosed_volume);
+
+/// The PLC of a closed triangle surface, every facet tagged `tag`.
+SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag = 1);
+
+}  // namespace meshprep
