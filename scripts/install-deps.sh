@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev
   python3
+  # third-party readers that the tests use to read back every tet-mesh format we write
+  gmsh python3-meshio python3-numpy
 )
 
 missing=()

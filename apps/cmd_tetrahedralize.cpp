@@ -1,0 +1,165 @@
+// meshprep tetrahedralize SURFACE -o OUT [--radius-edge R] [--min-dihedral DEG]
+//   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary]
+//   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
+//   [--fem-check] [--json FILE|-]
+#include "cli_common.h"
+
+#include "meshprep/core/io.h"
+#include "meshprep/fem/export.h"
+#include "meshprep/fem/extrude.h"
+#include "meshprep/fem/fem_check.h"
+#include "meshprep/fem/readiness.h"
+#include "meshprep/fem/solver_targets.h"
+#include "meshprep/fem/tet_quality.h"
+#include "meshprep/fem/tetrahedralize.h"
+#include "meshprep/quality/surface_distance.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+namespace meshprep::cli {
+namespace {
+
+struct TetOptions {
+  std::string input, output, json, target, diagnose, msh_version = "4.1";
+  TetParams params;
+  double extrude_depth = 0, extrude_relative = 0;
+  bool binary = false, fem_check = false;
+};
+
+void progress(const std::string& line) {
+  if (::isatty(STDERR_FILENO)) std::cerr << "meshprep: " << line << '\n';
+}
+
+TetExportOptions export_options(const TetOptions& o) {
+  if (!o.target.empty()) {
+    const SolverTarget& target = find_solver_target(o.target);
+    if (extension_of(o.output) != target.extension.substr(1))
+      throw InvalidInput(o.output + ": target " + target.name + " reads " + target.extension + " files");
+    return target.options;
+  }
+  TetExportOptions options;
+  options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+  options.binary = o.binary;
+  return options;
+}
+
+// The surface as a PLC: either closed and FEM-ready (checked), or an open height field extruded.
+SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohmann::ordered_json& json) {
+  if (o.extrude_depth > 0 || o.extrude_relative > 0) {
+    const double depth = o.extrude_depth > 0 ? o.extrude_depth : o.extrude_relative * bbox_diagonal(soup);
+    json["extrude_base_depth"] = depth;
+    return extrude_to_block(soup, depth);
+  }
+  const Readiness readiness = check_fem_readiness(soup);
+  json["readiness"] = to_json(readiness);
+  if (!readiness.ready()) {
+    if (!o.diagnose.empty()) write_soup(diagnosis_mesh(soup, readiness), o.diagnose);
+    if (!o.json.empty()) emit_json(json, o.json);
+    std::string reasons;
+    for (const ReadinessProblem& p : readiness.problems) {
+      std::string faces;
+      for (std::size_t i = 0; i < p.faces.size() && i < 8; ++i) faces += (i ? " " : "") + std::to_string(p.faces[i]);
+      std::cerr << "meshprep: " << o.input << ": not FEM-ready: " << p.check << ": " << p.what << " (faces " << faces
+                << (p.faces.size() > 8 ? " ..." : "") << "); " << p.hint << '\n';
+      reasons += (reasons.empty() ? "" : ", ") + p.check;
+    }
+    throw WorkFailed(o.input + ": the surface is not FEM-ready (" + reasons + ")" +
+                     (o.diagnose.empty() ? "; --diagnose FILE writes the offending faces" : "; offending faces in " + o.diagnose));
+  }
+  TriangleSoup oriented = soup;
+  if (readiness.inward_oriented) {  // TetGen does not mind, but our boundary tags' normals do
+    for (Triangle& t : oriented.triangles) std::swap(t[1], t[2]);
+    json["flipped_inward_orientation"] = true;
+  }
+  return plc_from_surface(oriented, 1);
+}
+
+int run_tetrahedralize(const TetOptions& o) {
+  ensure_not_input(o.output, o.input);
+  ensure_not_input(o.json, o.input);
+  ensure_not_input(o.diagnose, o.input);
+  const TetExportOptions options = export_options(o);
+  const TriangleSoup soup = read_soup(o.input);
+  nlohmann::ordered_json json;
+  json["input"] = o.input;
+  json["output"] = o.output;
+  SurfacePlc plc = prepare_surface(o, soup, json);
+  json["switches"] = tetgen_switches(o.params, 0);
+
+  progress("tetrahedralizing " + std::to_string(plc.facets.size()) + " facets with TetGen ...");
+  const auto start = std::chrono::steady_clock::now();
+  TetMesh tets;
+  try {
+    tets = tetrahedralize_plc(plc, o.params);
+  } catch (const TetgenError& e) {
+    json["tetgen_error"] = {{"code", e.code()}, {"message", e.what()}};
+    if (!o.json.empty()) emit_json(json, o.json);
+    throw WorkFailed(o.input + ": " + e.what());
+  }
+  json["tetgen_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const TetQualityReport quality = analyze_tet_quality(tets);
+  json["tet_quality"] = to_json(quality);
+  if (o.fem_check) {
+    progress("FEM check: P1 Poisson solve on " + std::to_string(tets.tets.size()) + " tets ...");
+    json["fem_check"] = to_json(run_fem_check(tets));
+  }
+  write_tet_mesh(tets, o.output, options);
+  if (!o.json.empty()) emit_json(json, o.json);
+  if (o.json != "-") {
+    std::cout << o.input << " -> " << o.output << ": " << quality.tetrahedra << " tets, " << quality.points
+              << " points, volume " << quality.volume << "\n  min dihedral " << quality.min_dihedral_deg.min
+              << " deg, tets under 10 deg " << 100 * quality.tets_min_dihedral_below_10 << " %, radius-edge max "
+              << quality.radius_edge_ratio.max << '\n';
+    if (o.fem_check) {
+      const auto& f = json["fem_check"];
+      std::cout << "  FEM check: patch test error " << f["patch_test_max_error"] << ", Poisson L2 error "
+                << f["poisson_l2_error"] << '\n';
+    }
+  }
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_tetrahedralize_command(CLI::App& app) {
+  auto o = std::make_shared<TetOptions>();
+  CLI::App* cmd = app.add_subcommand("tetrahedralize", "Tetrahedralise a closed surface with TetGen and export it for a solver");
+  cmd->add_option("surface", o->input, "Closed surface mesh (.off .obj .ply .stl)")->required();
+  cmd->add_option("-o,--output", o->output,
+                  "Tet mesh: .msh .vtu .vtk .mesh .node .inp (format from the extension)")->required();
+  cmd->add_option("--radius-edge", o->params.radius_edge, "TetGen -q bound on circumradius/shortest edge (0 = no refinement)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--min-dihedral", o->params.min_dihedral_deg, "TetGen -q target for the smallest dihedral angle, degrees")
+      ->check(CLI::Range(0.0, 30.0));
+  auto* abs_volume = cmd->add_option("--max-volume", o->params.max_volume, "Largest tet volume (absolute)")
+                         ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-volume-relative", o->params.max_volume_relative,
+                  "Largest tet volume as a fraction of the enclosed volume")
+      ->check(CLI::Range(1e-12, 1.0))
+      ->excludes(abs_volume);
+  cmd->add_flag("--keep-surface", o->params.keep_surface,
+                "Keep the input triangles exactly on the boundary (TetGen -Y); default: TetGen may split them");
+  cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
+      ->check(CLI::IsMember({"4.1", "2.2"}))
+      ->capture_default_str();
+  cmd->add_flag("--binary", o->binary, "Binary .msh");
+  cmd->add_option("--target", o->target, "Write what a solver reads: mfem, fenicsx, dealii, calculix, code_aster");
+  cmd->add_option("--diagnose", o->diagnose, "If the surface is not FEM-ready, write the offending faces to this mesh file");
+  auto* depth = cmd->add_option("--extrude-base", o->extrude_depth,
+                                "Close an open height field into a block with a flat base this far below its lowest point")
+                    ->check(CLI::PositiveNumber);
+  cmd->add_option("--extrude-base-relative", o->extrude_relative, "Same, as a fraction of the bounding-box diagonal")
+      ->check(CLI::Range(1e-9, 100.0))
+      ->excludes(depth);
+  cmd->add_flag("--fem-check", o->fem_check, "Solve a P1 Poisson problem with a known solution on the tets and report errors");
+  cmd->add_option("--json", o->json, "Write the results as JSON to FILE ('-' = stdout)");
+  return [o] { return run_tetrahedralize(*o); };
+}
+
+}  // namespace meshprep::cli

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# `meshprep tetrahedralize` on the real binary: success, solver targets, diagnoses of surfaces
+# that are not FEM-ready (exit 1, offending faces named, no tet mesh written), usage errors (exit 2).
+# Usage: cli_fem_test.sh MESHPREP_BINARY
+set -uo pipefail
+bin=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+passed=0 failed=0
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL: $*"; cat err.txt 2>/dev/null; }
+expect_exit() { [ "$2" = "$3" ] && ok || bad "$1: exit $3, expected $2"; }
+
+python3 - <<'PY'
+# A closed cube (12 triangles), the same cube without its top, two interpenetrating cubes,
+# a cube with a duplicated face.
+import itertools
+P = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+T = [(0,2,1),(1,2,3),(4,5,6),(5,7,6),(0,1,4),(1,5,4),(2,6,3),(3,6,7),(0,4,2),(2,4,6),(1,3,5),(3,7,5)]
+def off(name, pts, tris):
+    with open(name, "w") as f:
+        f.write(f"OFF\n{len(pts)} {len(tris)} 0\n")
+        for p in pts: f.write("%r %r %r\n" % p)
+        for t in tris: f.write("3 %d %d %d\n" % t)
+off("cube.off", P, T)
+off("open_box.off", P, [t for t in T if t not in ((4,5,6),(5,7,6))])
+Q = [(x + 0.5, y + 0.25, z + 0.3) for (x, y, z) in P]
+off("two_boxes.off", P + Q, T + [tuple(i + 8 for i in t) for t in T])
+off("duplicate.off", P, T + [T[3]])
+PY
+
+"$bin" tetrahedralize cube.off -o cube.msh --max-volume 0.01 --json out.json > stdout.txt 2> err.txt
+expect_exit "cube" 0 $?
+python3 -c "
+import json; j = json.load(open('out.json')); q = j['tet_quality']
+assert abs(q['volume'] - 1) < 1e-9 and q['tetrahedra'] >= 100 and q['radius_edge_ratio']['max'] <= 1.414 + 1e-9, q" && ok || bad "cube json"
+head -2 cube.msh | grep -q "^4.1" && ok || bad "default msh version"
+
+"$bin" tetrahedralize cube.off -o cube22.msh --target mfem > /dev/null 2> err.txt; expect_exit "mfem target" 0 $?
+head -2 cube22.msh | grep -q "^2.2" && ok || bad "mfem wants msh 2.2"
+"$bin" tetrahedralize cube.off -o cube.inp --target calculix > /dev/null 2> err.txt; expect_exit "calculix target" 0 $?
+"$bin" tetrahedralize cube.off -o cube.msh --target calculix > /dev/null 2> err.txt; expect_exit "target/extension mismatch" 2 $?
+"$bin" tetrahedralize cube.off -o cube.msh --target abaqus > /dev/null 2> err.txt; expect_exit "unknown target" 2 $?
+"$bin" tetrahedralize cube.off -o cube.xyz > /dev/null 2> err.txt; expect_exit "unknown format" 2 $?
+"$bin" tetrahedralize cube.off -o cube.msh --max-volume 1 --max-volume-relative 0.1 > /dev/null 2> err.txt
+expect_exit "exclusive volume bounds" 2 $?
+
+for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_faces; do
+  name=${case%%:*} check=${case#*:}
+  rm -f out.json
+  "$bin" tetrahedralize $name.off -o $name.msh --diagnose $name-bad.off --json out.json > /dev/null 2> err.txt
+  expect_exit "$name" 1 $?
+  grep -q "not FEM-ready: $check" err.txt && ok || bad "$name: no '$check' diagnosis"
+  [ ! -e $name.msh ] && ok || bad "$name: a tet mesh was written"
+  [ -s $name-bad.off ] && ok || bad "$name: no diagnosis mesh"
+  python3 -c "
+import json; j = json.load(open('out.json')); assert not j['readiness']['ready']
+assert any(p['check'] == '$check' and p['faces'] for p in j['readiness']['problems']), j" && ok || bad "$name json"
+done
+
+# A terrain-like open surface closes into a block with --extrude-base.
+python3 - <<'PY'
+import math
+n = 8
+pts = [(i, j, 0.3 * math.sin(i) * math.cos(j)) for j in range(n + 1) for i in range(n + 1)]
+tris = []
+for j in range(n):
+    for i in range(n):
+        a, b, c, d = j*(n+1)+i, j*(n+1)+i+1, (j+1)*(n+1)+i+1, (j+1)*(n+1)+i
+        tris += [(a, b, c), (a, c, d)]
+with open("terrain.off", "w") as f:
+    f.write(f"OFF\n{len(pts)} {len(tris)} 0\n")
+    for p in pts: f.write("%r %r %r\n" % p)
+    for t in tris: f.write("3 %d %d %d\n" % t)
+PY
+"$bin" tetrahedralize terrain.off -o terrain.vtu --extrude-base 2 --json out.json > /dev/null 2> err.txt
+expect_exit "terrain block" 0 $?
+python3 -c "
+import json; j = json.load(open('out.json')); q = j['tet_quality']; assert q['tetrahedra'] > 0 and q['inverted_tets'] == 0, q" && ok || bad "terrain json"
+"$bin" tetrahedralize terrain.off -o terrain.msh > /dev/null 2> err.txt; expect_exit "terrain without extrusion" 1 $?
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
