@@ -4,6 +4,7 @@
 # Usage: cli_fem_test.sh MESHPREP_BINARY
 set -uo pipefail
 bin=$1
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -58,6 +59,23 @@ for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_fac
 import json; j = json.load(open('out.json')); assert not j['readiness']['ready']
 assert any(p['check'] == '$check' and p['faces'] for p in j['readiness']['problems']), j" && ok || bad "$name json"
 done
+
+# Real TetGen output in every format, read back by meshio and gmsh with the counts and the volume.
+mkdir -p formats
+for out in formats/c41.msh formats/c22.msh formats/c.vtu formats/c.vtk formats/c.mesh formats/c.node formats/c.inp; do
+  extra=""; [ "$out" = formats/c22.msh ] && extra="--msh-version 2.2"
+  "$bin" tetrahedralize cube.off -o $out --max-volume 0.01 $extra --json formats.json > /dev/null 2> err.txt || bad "write $out"
+done
+"$bin" tetrahedralize cube.off -o formats/c41b.msh --max-volume 0.01 --binary > /dev/null 2> err.txt || bad "write binary msh"
+counts=$(python3 -c "
+import json; q = json.load(open('formats.json'))['tet_quality']; print(q['points'], q['tetrahedra'], q['volume'])")
+python=""
+for p in python3 /usr/bin/python3; do $p -c "import meshio, numpy" 2>/dev/null && { python=$p; break; }; done
+if [ -n "$python" ] && command -v gmsh > /dev/null; then
+  $python "$here/fem_readback.py" formats $counts > readback.txt 2>&1 && ok || { bad "read-back"; cat readback.txt; }
+else
+  echo "note: read-back skipped: no python3 with meshio or no gmsh (scripts/install-deps.sh installs them)"
+fi
 
 # A terrain-like open surface closes into a block with --extrude-base.
 python3 - <<'PY'
