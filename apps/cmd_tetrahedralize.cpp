@@ -53,7 +53,11 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
   if (o.extrude_depth > 0 || o.extrude_relative > 0) {
     const double depth = o.extrude_depth > 0 ? o.extrude_depth : o.extrude_relative * bbox_diagonal(soup);
     json["extrude_base_depth"] = depth;
-    return extrude_to_block(soup, depth);
+    try {
+      return extrude_to_block(soup, depth);
+    } catch (const InvalidInput& e) {
+      throw WorkFailed(o.input + ": cannot extrude: " + e.what());
+    }
   }
   const Readiness readiness = check_fem_readiness(soup);
   json["readiness"] = to_json(readiness);

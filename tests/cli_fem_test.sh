@@ -29,6 +29,7 @@ off("open_box.off", P, [t for t in T if t not in ((4,5,6),(5,7,6))])
 Q = [(x + 0.5, y + 0.25, z + 0.3) for (x, y, z) in P]
 off("two_boxes.off", P + Q, T + [tuple(i + 8 for i in t) for t in T])
 off("duplicate.off", P, T + [T[3]])
+off("fin.off", P + [(0.5, 0.5, -1.0)], T + [(0, 1, 8)])
 PY
 
 "$bin" tetrahedralize cube.off -o cube.msh --max-volume 0.01 --json out.json > stdout.txt 2> err.txt
@@ -47,7 +48,7 @@ head -2 cube22.msh | grep -q "^2.2" && ok || bad "mfem wants msh 2.2"
 "$bin" tetrahedralize cube.off -o cube.msh --max-volume 1 --max-volume-relative 0.1 > /dev/null 2> err.txt
 expect_exit "exclusive volume bounds" 2 $?
 
-for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_faces; do
+for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_faces fin:manifold; do
   name=${case%%:*} check=${case#*:}
   rm -f out.json
   "$bin" tetrahedralize $name.off -o $name.msh --diagnose $name-bad.off --json out.json > /dev/null 2> err.txt
@@ -97,6 +98,8 @@ expect_exit "terrain block" 0 $?
 python3 -c "
 import json; j = json.load(open('out.json')); q = j['tet_quality']; assert q['tetrahedra'] > 0 and q['inverted_tets'] == 0, q" && ok || bad "terrain json"
 "$bin" tetrahedralize terrain.off -o terrain.msh > /dev/null 2> err.txt; expect_exit "terrain without extrusion" 1 $?
+"$bin" tetrahedralize cube.off -o cube2.msh --extrude-base 1 > /dev/null 2> err.txt; expect_exit "extruding a closed surface" 1 $?
+grep -q "cube.off: cannot extrude" err.txt && ok || bad "extrusion error names the file"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -56,7 +56,7 @@ struct Reader {
     const auto n = get<std::uint64_t>();
     if (n > (in.size() - at) / sizeof(T)) throw TetgenError(-1, "TetGen's result arrived truncated");
     std::vector<T> v(n);
-    std::memcpy(v.data(), in.data() + at, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), in.data() + at, n * sizeof(T));
     at += n * sizeof(T);
     return v;
   }
@@ -205,9 +205,9 @@ TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params) {
   const std::string switches = tetgen_switches(params, std::abs(six_volume) / 6.0);
   const detail::IsolatedResult run = detail::call_isolated([&] { return run_tetgen(plc, switches); });
   if (run.crashed || run.output.empty()) {
-    throw TetgenError(-1, run.signal ? "TetGen crashed (signal " + std::to_string(run.signal) + ": " +
-                                           strsignal(run.signal) + ") on this surface; check it with `meshprep quality`"
-                                     : "TetGen ended without a result (exit status " + std::to_string(run.exit_status) + ")");
+    const std::string how = run.signal ? "signal " + std::to_string(run.signal) + ": " + strsignal(run.signal)
+                                       : "exit status " + std::to_string(run.exit_status);
+    throw TetgenError(-1, "TetGen crashed (" + how + ") on this surface; check it with `meshprep quality`");
   }
   Reader in{run.output, 1};
   switch (run.output[0]) {
