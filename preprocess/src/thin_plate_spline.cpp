@@ -1,0 +1,210 @@
+#include "meshprep/preprocess/thin_plate_spline.h"
+
+#include "meshprep/core/errors.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace meshprep {
+namespace {
+
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+constexpr double kEightPi = 8.0 * M_PI;
+// Pivot of the rank-revealing QR of B, relative to the largest, below which B is rank deficient:
+// unit-size centres within ~1e-10 (rms) of a plane (3D) or a line (2D) are coplanar (collinear).
+constexpr double kRankThreshold = 1e-10;
+
+double volume_kernel(double r) { return r; }
+double thin_plate_kernel(double r) { return r > 0 ? r * r * std::log(r) : 0.0; }
+
+// Centres as columns, translated to their centroid and divided by their largest distance from it.
+template <int D>
+struct UnitCentres {
+  Eigen::Matrix<double, D, 1> centre;
+  double scale = 1;
+  Eigen::Matrix<double, D, Eigen::Dynamic> points;
+};
+
+template <int D>
+UnitCentres<D> unit_centres(const std::vector<Eigen::Matrix<double, D, 1>>& points, const char* who) {
+  UnitCentres<D> unit;
+  unit.points.resize(D, static_cast<Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) unit.points.col(static_cast<Index>(i)) = points[i];
+  if (!unit.points.allFinite()) throw InvalidInput(std::string(who) + ": a coordinate is not finite");
+  unit.centre = unit.points.rowwise().mean();
+  unit.points.colwise() -= unit.centre;
+  unit.scale = unit.points.colwise().norm().maxCoeff();
+  if (!(unit.scale > 0)) throw InvalidInput(std::string(who) + ": all points coincide");
+  unit.points /= unit.scale;
+  return unit;
+}
+
+// A_ij = phi(|q_i - q_j|).
+template <int D, class Kernel>
+MatrixXd kernel_matrix(const Eigen::Matrix<double, D, Eigen::Dynamic>& q, Kernel phi, const char* who) {
+  const Index n = q.cols();
+  MatrixXd a(n, n);
+  for (Index i = 0; i < n; ++i) {
+    a(i, i) = phi(0.0);
+    for (Index j = 0; j < i; ++j) {
+      const double r = (q.col(i) - q.col(j)).norm();
+      if (r == 0) throw InvalidInput(std::string(who) + ": two points coincide");
+      a(i, j) = a(j, i) = phi(r);
+    }
+  }
+  return a;
+}
+
+// B_i = (1, q_i^T): the linear polynomial of eq. (1).
+MatrixXd volume_polynomial_matrix(const Eigen::Matrix3Xd& q) {
+  MatrixXd b(q.cols(), 4);
+  b.col(0).setOnes();
+  b.rightCols(3) = q.transpose();
+  return b;
+}
+
+// 1, x, y, x^2, xy, y^2: the first 3 (linear) or all 6 (quadratic) span a height map's polynomial.
+Eigen::Matrix<double, 6, 1> monomials(const Eigen::Vector2d& q) {
+  Eigen::Matrix<double, 6, 1> m;
+  m << 1.0, q.x(), q.y(), q.x() * q.x(), q.x() * q.y(), q.y() * q.y();
+  return m;
+}
+
+Index term_count(HeightMapPolynomial polynomial) { return polynomial == HeightMapPolynomial::linear ? 3 : 6; }
+
+MatrixXd height_map_polynomial_matrix(const Eigen::Matrix2Xd& q, Index terms) {
+  MatrixXd b(q.cols(), terms);
+  for (Index i = 0; i < q.cols(); ++i) b.row(i) = monomials(q.col(i)).head(terms).transpose();
+  return b;
+}
+
+// The doubly bordered system of eq. (2), [A B; B^T 0][gamma; v] = [h; 0], solved by the
+// null-space method (see thin_plate_spline.h). `sign` is +1 when Z^T A Z is positive definite
+// (thin plate), -1 when it is negative definite (volume spline); the Cholesky factor is of
+// sign * Z^T A Z.
+class BorderedSystem {
+ public:
+  BorderedSystem(MatrixXd kernel, const MatrixXd& polynomial, double sign, Index min_rank, const char* degenerate,
+                 const char* who)
+      : kernel_(std::move(kernel)), sign_(sign) {
+    polynomial_.setThreshold(kRankThreshold);
+    polynomial_.compute(polynomial);
+    if (polynomial_.rank() < min_rank) throw InvalidInput(std::string(who) + ": the points are " + degenerate);
+    const MatrixXd q = polynomial_.householderQ();
+    null_basis_ = q.rightCols(q.cols() - polynomial_.rank());
+    reduced_.compute(sign_ * null_basis_.transpose() * kernel_ * null_basis_);
+    if (reduced_.info() != Eigen::Success) throw SolverError(std::string(who) + ": kernel matrix not definite");
+  }
+
+  struct Solution {
+    VectorXd gamma;
+    VectorXd polynomial;  // v, the coefficients of the polynomial part
+    double energy = 0;  // sign * gamma^T A gamma
+  };
+
+  Solution solve(const VectorXd& h) const {
+    Solution s;
+    const VectorXd g = null_basis_.transpose() * h;
+    s.gamma = null_basis_ * reduced_.solve(sign_ * g);
+    s.polynomial = polynomial_.solve(h - kernel_ * s.gamma);
+    // gamma^T A gamma = g^T (Z^T A Z)^-1 g, so sign * gamma^T A gamma = |L^-1 g|^2 >= 0.
+    s.energy = reduced_.matrixL().solve(g).squaredNorm();
+    return s;
+  }
+
+  // sign * M, M = Z (Z^T A Z)^-1 Z^T the upper-left block of the bordered inverse.
+  MatrixXd energy_matrix() const { return null_basis_ * reduced_.solve(null_basis_.transpose()); }
+
+ private:
+  MatrixXd kernel_;
+  double sign_;
+  Eigen::CompleteOrthogonalDecomposition<MatrixXd> polynomial_;
+  MatrixXd null_basis_;
+  Eigen::LLT<MatrixXd> reduced_;
+};
+
+void check_values(const VectorXd& values, std::size_t points, const char* who) {
+  if (static_cast<std::size_t>(values.size()) != points)
+    throw InvalidInput(std::string(who) + ": " + std::to_string(values.size()) + " values for " +
+                       std::to_string(points) + " points");
+  if (!values.allFinite()) throw InvalidInput(std::string(who) + ": a value is not finite");
+}
+
+void check_count(std::size_t points, std::size_t minimum, const char* who) {
+  if (points < minimum)
+    throw InvalidInput(std::string(who) + ": " + std::to_string(points) + " points, at least " +
+                       std::to_string(minimum) + " needed");
+}
+
+// The volume spline's system on unit-size centres; coplanar centres (rank 3) are accepted.
+BorderedSystem volume_system(const UnitCentres<3>& unit, const char* who) {
+  return BorderedSystem(kernel_matrix(unit.points, volume_kernel, who), volume_polynomial_matrix(unit.points), -1.0, 3,
+                        "collinear", who);
+}
+
+}  // namespace
+
+VolumeSpline::VolumeSpline(const std::vector<Vec3>& centres, const Eigen::VectorXd& values) {
+  constexpr const char* who = "VolumeSpline";
+  check_count(centres.size(), 4, who);
+  check_values(values, centres.size(), who);
+  UnitCentres<3> unit = unit_centres(centres, who);
+  const BorderedSystem::Solution s = volume_system(unit, who).solve(values);
+  centre_ = unit.centre;
+  scale_ = unit.scale;
+  scaled_centres_ = std::move(unit.points);
+  gamma_ = s.gamma;
+  affine_ = s.polynomial;
+  // J scales as 1/length in R^3 (D^2 f ~ 1/length^2, volume ~ length^3).
+  bending_energy_ = kEightPi * s.energy / scale_;
+}
+
+double VolumeSpline::evaluate(const Vec3& p) const {
+  const Vec3 q = (p - centre_) / scale_;
+  const double kernel_part = gamma_.dot((scaled_centres_.colwise() - q).colwise().norm().transpose());
+  return kernel_part + affine_[0] + affine_.tail<3>().dot(q);
+}
+
+Eigen::MatrixXd volume_spline_energy_matrix(const std::vector<Vec3>& centres) {
+  constexpr const char* who = "volume_spline_energy_matrix";
+  check_count(centres.size(), 4, who);
+  const UnitCentres<3> unit = unit_centres(centres, who);
+  return (kEightPi / unit.scale) * volume_system(unit, who).energy_matrix();
+}
+
+HeightMapSpline::HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
+                                 HeightMapPolynomial polynomial) {
+  constexpr const char* who = "HeightMapSpline";
+  const Index terms = term_count(polynomial);
+  check_count(sites.size(), static_cast<std::size_t>(terms), who);
+  check_values(heights, sites.size(), who);
+  UnitCentres<2> unit = unit_centres(sites, who);
+  const BorderedSystem system(kernel_matrix(unit.points, thin_plate_kernel, who),
+                              height_map_polynomial_matrix(unit.points, terms), 1.0, terms,
+                              polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic", who);
+  const BorderedSystem::Solution s = system.solve(heights);
+  centre_ = unit.centre;
+  scale_ = unit.scale;
+  scaled_sites_ = std::move(unit.points);
+  gamma_ = s.gamma;
+  polynomial_ = s.polynomial;
+  // Heights are not rescaled, so J scales as 1/length^2 in R^2.
+  bending_energy_ = kEightPi * s.energy / (scale_ * scale_);
+}
+
+double HeightMapSpline::evaluate(double x, double y) const {
+  const Eigen::Vector2d q = (Eigen::Vector2d(x, y) - centre_) / scale_;
+  double kernel_part = 0;
+  for (Index j = 0; j < scaled_sites_.cols(); ++j)
+    kernel_part += gamma_[j] * thin_plate_kernel((scaled_sites_.col(j) - q).norm());
+  return kernel_part + monomials(q).head(polynomial_.size()).dot(polynomial_);
+}
+
+}  // namespace meshprep
