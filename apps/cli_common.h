@@ -30,5 +30,6 @@ using Action = std::function<int()>;
 Action add_quality_command(CLI::App& app);
 Action add_convert_command(CLI::App& app);
 Action add_tetrahedralize_command(CLI::App& app);
+Action add_simplify_command(CLI::App& app);
 
 }  // namespace meshprep::cli

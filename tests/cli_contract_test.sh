@@ -143,5 +143,35 @@ import json; j = json.load(open('out/rt.json')); assert j['faces'] == 4 and j['c
 "$bin" convert tet.off /nonexistent-dir/x.off > /dev/null 2> err.txt; check "unwritable output" 2 $?
 expect_error "unwritable message" "nonexistent-dir"
 
+# simplify: reaches the target, keeps the sphere closed, reports the output's quality against the input.
+python3 - <<'PY'
+import math
+# UV sphere: 16 x 32, closed (poles as single vertices)
+n, m = 16, 32
+pts = [(0, 0, 1)] + [(math.sin(math.pi * i / n) * math.cos(2 * math.pi * j / m),
+                       math.sin(math.pi * i / n) * math.sin(2 * math.pi * j / m),
+                       math.cos(math.pi * i / n)) for i in range(1, n) for j in range(m)] + [(0, 0, -1)]
+v = lambda i, j: 1 + (i - 1) * m + j % m
+tris = [(0, v(1, j), v(1, j + 1)) for j in range(m)]
+for i in range(1, n - 1):
+    for j in range(m):
+        tris += [(v(i, j), v(i + 1, j), v(i + 1, j + 1)), (v(i, j), v(i + 1, j + 1), v(i, j + 1))]
+tris += [(len(pts) - 1, v(n - 1, j + 1), v(n - 1, j)) for j in range(m)]
+with open("sphere.off", "w") as f:
+    f.write(f"OFF\n{len(pts)} {len(tris)} 0\n")
+    for p in pts: f.write("%r %r %r\n" % p)
+    for t in tris: f.write("3 %d %d %d\n" % t)
+PY
+"$bin" simplify sphere.off -o out/sphere_small.off --ratio 0.25 --json out/simplify.json > /dev/null 2> err.txt
+check "simplify" 0 $?
+python3 -c "
+import json; j = json.load(open('out/simplify.json'))
+assert j['faces_before'] == 960 and j['reached_target'] and j['quality']['closed'] and j['quality']['genus'] == 0, j
+assert j['quality']['reference']['hausdorff_relative'] < 0.05, j['quality']['reference']" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify json"; }
+"$bin" simplify sphere.off -o out/x.off --ratio 0.5 --faces 100 > /dev/null 2> err.txt; check "simplify ratio and faces" 2 $?
+"$bin" simplify sphere.off -o out/x.off > /dev/null 2> err.txt; check "simplify without target" 2 $?
+[ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify wrote on a usage error"; }
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
