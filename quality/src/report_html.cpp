@@ -159,7 +159,8 @@ detail::HistogramOptions angle_histogram(const std::string& title, double lo, do
   return o;
 }
 
-// Areas from 0 to the largest finite area.
+// Areas from 0 to twice the 95th percentile, larger ones in an overflow bar: a few huge faces
+// (common after decimation) would otherwise squeeze every other face into the first bin.
 detail::HistogramOptions area_histogram(const std::vector<double>& areas, const Distribution& d) {
   double largest = 0;
   for (double a : areas)
@@ -167,7 +168,9 @@ detail::HistogramOptions area_histogram(const std::vector<double>& areas, const 
   detail::HistogramOptions o;
   o.title = "Face area";
   o.x_label = "area";
-  o.hi = largest > 0 ? largest : 1;
+  const double clip = std::isfinite(d.p95) && d.p95 > 0 ? 2 * d.p95 : largest;
+  o.hi = clip > 0 ? std::min(clip, largest) : 1;
+  o.overflow = largest > o.hi;
   o.markers = percentile_markers(d);
   return o;
 }
