@@ -31,12 +31,6 @@ std::vector<std::size_t> concat(std::vector<std::size_t> a, const std::vector<st
   return a;
 }
 
-double signed_volume(const TriangleSoup& s) {
-  double six_v = 0;
-  for (const Triangle& t : s.triangles) six_v += s.points[t[0]].dot(s.points[t[1]].cross(s.points[t[2]]));
-  return six_v / 6.0;
-}
-
 }  // namespace
 
 Readiness check_fem_readiness(const TriangleSoup& surface) {

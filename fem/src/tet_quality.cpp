@@ -80,10 +80,6 @@ std::vector<TetShape> tet_shapes(const TetMesh& mesh) {
   return shapes;
 }
 
-Json number(double v) { return json_number(v); }
-
-Json distribution(const Distribution& d) { return json_distribution(d); }
-
 }  // namespace
 
 TetShape tet_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
@@ -129,11 +125,11 @@ Json to_json(const TetQualityReport& report) {
   for (const auto& [region, count] : report.tets_per_region) regions[std::to_string(region)] = count;
   return {{"points", report.points},
           {"tetrahedra", report.tetrahedra},
-          {"volume", number(report.volume)},
+          {"volume", json_number(report.volume)},
           {"inverted_tets", report.inverted_tets},
-          {"min_dihedral_deg", distribution(report.min_dihedral_deg)},
-          {"max_dihedral_deg", distribution(report.max_dihedral_deg)},
-          {"radius_edge_ratio", distribution(report.radius_edge_ratio)},
+          {"min_dihedral_deg", json_distribution(report.min_dihedral_deg)},
+          {"max_dihedral_deg", json_distribution(report.max_dihedral_deg)},
+          {"radius_edge_ratio", json_distribution(report.radius_edge_ratio)},
           {"tets_min_dihedral_below_10", report.tets_min_dihedral_below_10},
           {"tets_per_region", regions}};
 }

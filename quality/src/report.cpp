@@ -34,12 +34,7 @@ void fill_topology(const TriangleSoup& soup, QualityReport& r) {
   // traversing it in opposite directions (non-manifold vertices do not matter for it).
   const bool volume_defined = topo.closed && topo.non_manifold_edges == 0 && topo.inconsistent_edges == 0 &&
                               topo.repeated_index_faces == 0 && !soup.triangles.empty();
-  if (volume_defined) {
-    double six_volume = 0;
-    for (const Triangle& t : soup.triangles)
-      six_volume += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
-    r.volume = six_volume / 6.0;
-  }
+  if (volume_defined) r.volume = signed_volume(soup);
 }
 
 void fill_shape(const TriangleSoup& soup, std::size_t n_worst, QualityReport& r) {

@@ -10,13 +10,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json number(double v) { return json_number(v); }
+Json optional_number(const std::optional<double>& v) { return v ? json_number(*v) : Json(nullptr); }
 
-Json optional_number(const std::optional<double>& v) { return v ? number(*v) : Json(nullptr); }
-
-Json point(const Vec3& p) { return Json::array({number(p.x()), number(p.y()), number(p.z())}); }
-
-Json distribution(const Distribution& d) { return json_distribution(d); }
+Json point(const Vec3& p) { return Json::array({json_number(p.x()), json_number(p.y()), json_number(p.z())}); }
 
 Json intersecting_pairs(const QualityReport& report) {
   Json pairs = Json::array();
@@ -29,22 +25,22 @@ Json worst_faces(const QualityReport& report) {
   for (const WorstFace& face : report.worst_faces) {
     const TriangleShape& s = face.shape;
     faces.push_back({{"index", face.index},
-                     {"radius_ratio", number(s.radius_ratio)},
-                     {"aspect_ratio", number(s.aspect_ratio)},
-                     {"min_angle_deg", number(s.min_angle_deg)},
-                     {"max_angle_deg", number(s.max_angle_deg)},
-                     {"area", number(s.area)}});
+                     {"radius_ratio", json_number(s.radius_ratio)},
+                     {"aspect_ratio", json_number(s.aspect_ratio)},
+                     {"min_angle_deg", json_number(s.min_angle_deg)},
+                     {"max_angle_deg", json_number(s.max_angle_deg)},
+                     {"area", json_number(s.area)}});
   }
   return faces;
 }
 
 Json reference(const ReferenceComparison& r) {
   return {{"file", r.path},
-          {"hausdorff", number(r.hausdorff)},
-          {"hausdorff_relative", number(r.hausdorff_relative)},
-          {"rms_relative", number(r.rms_relative)},
-          {"mean_relative", number(r.mean_relative)},
-          {"reference_bbox_diagonal", number(r.reference_bbox_diagonal)},
+          {"hausdorff", json_number(r.hausdorff)},
+          {"hausdorff_relative", json_number(r.hausdorff_relative)},
+          {"rms_relative", json_number(r.rms_relative)},
+          {"mean_relative", json_number(r.mean_relative)},
+          {"reference_bbox_diagonal", json_number(r.reference_bbox_diagonal)},
           {"volume_change_percent", optional_number(r.volume_change_percent)},
           {"samples", r.samples}};
 }
@@ -72,22 +68,22 @@ nlohmann::ordered_json to_json(const QualityReport& report) {
   j["self_intersections"] = report.self_intersections;
   j["self_intersections_capped"] = report.self_intersections_capped;
   j["self_intersecting_pairs"] = intersecting_pairs(report);
-  j["area"] = number(report.area);
+  j["area"] = json_number(report.area);
   j["volume"] = optional_number(report.volume);
-  j["bbox_diagonal"] = number(report.bbox_diagonal);
+  j["bbox_diagonal"] = json_number(report.bbox_diagonal);
   j["bbox_min"] = point(report.bbox_min);
   j["bbox_max"] = point(report.bbox_max);
-  j["radius_ratio"] = distribution(report.radius_ratio);
-  j["aspect_ratio"] = distribution(report.aspect_ratio);
-  j["min_angle_deg"] = distribution(report.min_angle_deg);
-  j["max_angle_deg"] = distribution(report.max_angle_deg);
-  j["face_area"] = distribution(report.area_distribution);
-  j["faces_min_angle_below_20"] = number(report.faces_min_angle_below_20);
-  j["faces_min_angle_below_10"] = number(report.faces_min_angle_below_10);
-  j["faces_radius_ratio_above_2"] = number(report.faces_radius_ratio_above_2);
+  j["radius_ratio"] = json_distribution(report.radius_ratio);
+  j["aspect_ratio"] = json_distribution(report.aspect_ratio);
+  j["min_angle_deg"] = json_distribution(report.min_angle_deg);
+  j["max_angle_deg"] = json_distribution(report.max_angle_deg);
+  j["face_area"] = json_distribution(report.area_distribution);
+  j["faces_min_angle_below_20"] = json_number(report.faces_min_angle_below_20);
+  j["faces_min_angle_below_10"] = json_number(report.faces_min_angle_below_10);
+  j["faces_radius_ratio_above_2"] = json_number(report.faces_radius_ratio_above_2);
   j["worst_faces"] = worst_faces(report);
   if (report.reference) j["reference"] = reference(*report.reference);
-  j["time_seconds"] = number(report.time_seconds);
+  j["time_seconds"] = json_number(report.time_seconds);
   return j;
 }
 

@@ -38,6 +38,13 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   return s;
 }
 
+double signed_volume(const TriangleSoup& soup) {
+  double six_volume = 0;
+  for (const Triangle& t : soup.triangles)
+    six_volume += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
+  return six_volume / 6.0;
+}
+
 std::vector<TriangleShape> triangle_shapes(const TriangleSoup& soup) {
   std::vector<TriangleShape> shapes(soup.triangles.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, shapes.size(), 4096), [&](const auto& range) {

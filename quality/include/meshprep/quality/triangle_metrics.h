@@ -30,6 +30,10 @@ struct TriangleShape {
 /// Shape of the triangle (a, b, c).
 TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Signed volume enclosed by the soup's faces, sum of p0 . (p1 x p2) / 6 (divergence theorem);
+/// meaningful for a closed, consistently oriented surface (positive for outward normals).
+double signed_volume(const TriangleSoup& soup);
+
 /// Shape of every triangle of a soup, in face order (parallel over faces).
 std::vector<TriangleShape> triangle_shapes(const TriangleSoup& soup);
 
