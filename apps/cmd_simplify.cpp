@@ -1,23 +1,43 @@
-// meshprep simplify IN -o OUT (--ratio R | --faces N) [--cost quadric] [--json FILE|-]
+// meshprep simplify IN -o OUT (--ratio R | --faces N) [--cost bending|distance|quadric]
+//   [--max-error E] [--min-angle DEG] [--no-polish] [--json FILE|-]
 #include "cli_common.h"
+#include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/simplify.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/report_writers.h"
+#include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/topology.h"
 
 #include <iostream>
+#include <map>
 #include <memory>
 
 namespace meshprep::cli {
 namespace {
 
+const std::map<std::string, CollapseCost> kCosts = {
+    {"bending", CollapseCost::Bending}, {"distance", CollapseCost::Distance}, {"quadric", CollapseCost::Quadric}};
+
 struct SimplifyOptions {
-  std::string input, output, json, cost = "quadric";
-  double ratio = 0;
+  std::string input, output, json, cost = "bending";
+  double ratio = 0, max_error = 0, min_angle = 20;
   std::size_t faces = 0;
+  bool no_polish = false;
 };
+
+// Topology and self-intersections are the contract of a simplifier: report them for the input too.
+nlohmann::ordered_json input_facts(const TriangleSoup& soup) {
+  const Topology topology = analyze_topology(soup);
+  nlohmann::ordered_json json;
+  json["closed"] = topology.closed;
+  json["manifold"] = topology.manifold;
+  json["genus"] = topology.genus ? nlohmann::ordered_json(*topology.genus) : nlohmann::ordered_json(nullptr);
+  json["self_intersections"] = find_self_intersections(soup).count;
+  return json;
+}
 
 int run_simplify(const SimplifyOptions& o) {
   ensure_not_input(o.output, o.input);
@@ -25,13 +45,23 @@ int run_simplify(const SimplifyOptions& o) {
   if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
   if (!loaded.build.dropped_faces.empty())
-    std::cerr << "meshprep: warning: " << o.input << ": " << loaded.build.dropped_faces.size()
-              << " faces make an edge or vertex non-manifold and are left out (first: face "
-              << loaded.build.dropped_faces.front() << ")\n";
+    throw InvalidInput(o.input + ": face " + std::to_string(loaded.build.dropped_faces.front()) +
+                       (loaded.build.dropped_faces.size() > 1
+                            ? " and " + std::to_string(loaded.build.dropped_faces.size() - 1) + " more"
+                            : std::string()) +
+                       " make an edge or vertex non-manifold; simplification needs a manifold surface "
+                       "(see meshprep quality for the list)");
   SimplifyParams params;
   params.keep_ratio = o.ratio > 0 ? o.ratio : 1.0;
   params.target_faces = o.faces;
+  params.cost = kCosts.at(o.cost);
+  params.max_error = o.max_error;
+  params.min_angle_deg = o.min_angle;
+  params.polish = !o.no_polish;
+  ProgressBar bar("simplify");
+  params.progress = [&bar](double fraction) { bar.update(fraction); };
   const SimplifyResult result = simplify(loaded.mesh, params);
+  bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
   write_soup(output, o.output);
 
@@ -43,12 +73,20 @@ int run_simplify(const SimplifyOptions& o) {
   json["input"] = o.input;
   json["output"] = o.output;
   json["cost"] = o.cost;
+  json["min_angle_deg"] = o.min_angle;
+  json["max_error"] = o.max_error;
   json["faces_before"] = result.faces_before;
   json["faces_after"] = result.faces_after;
   json["target_faces"] = result.target_faces;
   json["reached_target"] = result.reached_target;
   json["time_seconds"] = result.seconds;
-  json["dropped_input_faces"] = loaded.build.dropped_faces.size();
+  json["collapses"] = result.collapses;
+  json["rejected"] = {{"topology", result.rejected_topology},
+                      {"shape", result.rejected_shape},
+                      {"max_error", result.rejected_error}};
+  json["energy_evaluations"] = result.energy_evaluations;
+  json["polish"] = {{"flips", result.polish_flips}, {"moves", result.polish_moves}, {"fit_moves", result.fit_moves}};
+  json["input_topology"] = input_facts(loaded.soup);
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-")
@@ -56,6 +94,9 @@ int run_simplify(const SimplifyOptions& o) {
               << " faces in " << result.seconds << " s; Hausdorff " << quality.reference->hausdorff_relative
               << " of the diagonal, min angle < 20 deg on " << 100 * quality.faces_min_angle_below_20
               << " % of faces, radius ratio p95 " << quality.radius_ratio.p95 << '\n';
+  if (!result.reached_target)
+    std::cerr << "meshprep: warning: stopped at " << result.faces_after << " faces, target " << result.target_faces
+              << " (no further collapse passes the guards" << (o.max_error > 0 ? " and --max-error" : "") << ")\n";
   return kSuccess;
 }
 
@@ -64,16 +105,28 @@ int run_simplify(const SimplifyOptions& o) {
 Action add_simplify_command(CLI::App& app) {
   auto o = std::make_shared<SimplifyOptions>();
   CLI::App* cmd = app.add_subcommand("simplify", "Reduce a surface mesh to a target size by edge collapse");
-  cmd->add_option("input", o->input, "Surface mesh")->required();
+  cmd->add_option("input", o->input, "Surface mesh (edge-manifold)")->required();
   cmd->add_option("-o,--output", o->output, "Simplified surface (.off .obj .ply .stl)")->required();
   auto* ratio = cmd->add_option("--ratio", o->ratio, "Fraction of the faces kept, in (0, 1]")
                     ->check(CLI::Range(1e-9, 1.0));
   cmd->add_option("--faces", o->faces, "Target number of faces")->check(CLI::PositiveNumber)->excludes(ratio);
   cmd->add_option("--cost", o->cost,
-                  "Collapse cost: quadric (OpenMesh's quadric decimater, the baseline; the paper's bending "
-                  "energy is not in yet)")
-      ->check(CLI::IsMember({"quadric"}))
+                  "Collapse cost: bending (the paper's bending energy as a shape factor on a quadric error "
+                  "memory), distance (the paper's simple cost: shortest edge first, placed on the local RBF "
+                  "surface) or quadric (OpenMesh's quadric decimater, the baseline, no shape guard)")
+      ->check(CLI::IsMember({"bending", "distance", "quadric"}))
       ->capture_default_str();
+  cmd->add_option("--max-error", o->max_error,
+                  "Refuse collapses whose estimated deviation exceeds this fraction of the bounding-box diagonal "
+                  "(0 = no limit; the target may then not be reached)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--min-angle", o->min_angle,
+                  "Refuse collapses creating a triangle angle below this (degrees) unless the faces around the "
+                  "edge already had a smaller one; 0 disables")
+      ->check(CLI::Range(0.0, 59.0))
+      ->capture_default_str();
+  cmd->add_flag("--no-polish", o->no_polish, "Skip the flips and relaxation that improve angles after collapsing");
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_simplify(*o); };
 }

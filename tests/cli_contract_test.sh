@@ -169,7 +169,22 @@ import json; j = json.load(open('out/simplify.json'))
 assert j['faces_before'] == 960 and j['reached_target'] and j['quality']['closed'] and j['quality']['genus'] == 0, j
 assert j['quality']['reference']['hausdorff_relative'] < 0.05, j['quality']['reference']" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify json"; }
+for cost in distance quadric; do
+  "$bin" simplify sphere.off -o out/sphere_$cost.off --ratio 0.25 --cost $cost --json out/s_$cost.json > /dev/null 2> err.txt
+  check "simplify --cost $cost" 0 $?
+done
+python3 -c "
+import json
+b, q = (json.load(open('out/' + f)) for f in ('simplify.json', 's_quadric.json'))
+assert b['cost'] == 'bending' and q['cost'] == 'quadric' and b['input_topology']['genus'] == 0, b
+# the guard: no angle under min(20 degrees, the input's smallest: 360 / 32 at the poles)
+assert b['quality']['min_angle_deg']['min'] >= 11.25 - 1e-9, b['quality']['min_angle_deg']" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify costs json"; }
 "$bin" simplify sphere.off -o out/x.off --ratio 0.5 --faces 100 > /dev/null 2> err.txt; check "simplify ratio and faces" 2 $?
+"$bin" simplify sphere.off -o out/x.off --ratio 0.5 --min-angle 70 > /dev/null 2> err.txt; check "simplify min angle out of range" 2 $?
+"$bin" simplify sphere.off -o out/x.off --ratio 0.5 --cost magic > /dev/null 2> err.txt; check "simplify unknown cost" 2 $?
+"$bin" simplify fin.off -o out/x.off --ratio 0.5 > /dev/null 2> err.txt; check "simplify non-manifold input" 2 $?
+expect_error "simplify non-manifold message" "fin.off: face 4 .*non-manifold"
 "$bin" simplify sphere.off -o out/x.off > /dev/null 2> err.txt; check "simplify without target" 2 $?
 [ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify wrote on a usage error"; }
 

@@ -367,3 +367,18 @@ TEST(CollapsePoint, CurvedPatchAndDegenerateCases) {
   EXPECT_THROW(optimal_collapse_point(patch, 2, 2), InvalidInput);
   EXPECT_THROW(optimal_collapse_point(patch, 0, 10), InvalidInput);
 }
+
+TEST(CollapseEnergy, SmallRingKernelMatchesTheFullEnergyMatrix) {
+  // Up to 40 centres CollapseEnergy uses a fixed-size bordered LU instead of the null-space
+  // solution of volume_spline_energy_matrix: the same J(s) up to round-off, in 3D and on a plane.
+  for (const std::vector<Vec3>& centres : {scattered_centres(14), tilted_plane_points(12), scattered_centres(40)}) {
+    const Eigen::MatrixXd e = volume_spline_energy_matrix(centres);
+    const CollapseEnergy energy(centres, 2, 5);
+    const double d2 = (centres[5] - centres[2]).squaredNorm();
+    for (const double s : {0.0, 0.3, 1.0}) {
+      const double wa = s, wb = s - 1;
+      const double expected = d2 * (wa * wa * e(2, 2) + 2 * wa * wb * e(2, 5) + wb * wb * e(5, 5));
+      EXPECT_NEAR(energy.at(s), expected, 1e-9 * std::max(1.0, expected));
+    }
+  }
+}

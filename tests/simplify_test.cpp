@@ -1,67 +1,215 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/simplify.h"
+#include "meshprep/preprocess/sliding_landmarks.h"
 #include "meshprep/quality/report.h"
 
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 using namespace meshprep;
 
 namespace {
 
-QualityReport simplified_quality(const TriangleSoup& input, const SimplifyParams& params, SimplifyResult* result) {
+constexpr CollapseCost kAllCosts[] = {CollapseCost::Bending, CollapseCost::Distance, CollapseCost::Quadric};
+
+QualityReport simplified_quality(const TriangleSoup& input, const SimplifyParams& params, SimplifyResult* result,
+                                 TriMesh* out = nullptr) {
   TriMesh mesh = mesh_from_soup(input);
   *result = simplify(mesh, params);
   QualityParams q;
   q.distance_samples = 20000;
+  if (out) *out = mesh;
   return analyze_quality(soup_from_mesh(mesh), q, &input);
+}
+
+SimplifyParams with_cost(CollapseCost cost) {
+  SimplifyParams p;
+  p.cost = cost;
+  return p;
+}
+
+// A spherical cap of the unit sphere, polar angle up to 60 degrees, as rings of vertices: an open
+// disk with a curved boundary (a circle of radius sin 60 degrees) and curvature inside.
+TriangleSoup spherical_cap(int rings, int sectors) {
+  TriangleSoup s;
+  const double max_angle = M_PI / 3;
+  s.points.emplace_back(0, 0, 1);
+  for (int r = 1; r <= rings; ++r) {
+    const double theta = max_angle * r / rings;
+    for (int k = 0; k < sectors; ++k) {
+      const double phi = 2 * M_PI * (k + 0.5 * (r % 2)) / sectors;
+      s.points.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    }
+  }
+  auto id = [&](int r, int k) { return static_cast<std::uint32_t>(1 + (r - 1) * sectors + (k % sectors)); };
+  for (int k = 0; k < sectors; ++k) s.triangles.push_back({0, id(1, k), id(1, k + 1)});
+  for (int r = 1; r < rings; ++r)
+    for (int k = 0; k < sectors; ++k) {
+      // Odd rings are rotated by half a sector: pair each vertex with the two nearest of the next ring.
+      const int shift = r % 2;
+      s.triangles.push_back({id(r, k), id(r + 1, k + 1 - shift), id(r, k + 1)});
+      s.triangles.push_back({id(r, k), id(r + 1, k + sectors - shift), id(r + 1, k + 1 - shift)});
+    }
+  return s;
+}
+
+double boundary_length(const TriMesh& mesh) {
+  double length = 0;
+  for (const auto e : mesh.edges())
+    if (mesh.is_boundary(e)) length += mesh.calc_edge_length(e);
+  return length;
 }
 
 }  // namespace
 
-TEST(SimplifyQuadric, SphereStaysClosedGenus0NearTheSurface) {
+TEST(Simplify, SphereStaysClosedGenus0NearTheSurfaceWithEveryCost) {
   const TriangleSoup sphere = test::icosphere(4);  // 5120 faces
-  SimplifyResult result;
-  const QualityReport r = simplified_quality(sphere, {}, &result);
-  EXPECT_EQ(result.target_faces, 512u);
-  EXPECT_TRUE(result.reached_target);
-  EXPECT_TRUE(r.closed);
-  EXPECT_TRUE(r.manifold);
-  EXPECT_EQ(*r.genus, 0);
-  EXPECT_EQ(r.self_intersections, 0u);
-  // Halfedge collapses keep every vertex on the unit sphere, so the distance is the sagitta of
-  // the largest faces: 512 faces average ~0.16 edges, and quadric decimation leaves some ~0.5
-  // long (sagitta 0.5^2 / 8 ~ 0.03). A stray vertex would be ~0.1 off or more.
-  EXPECT_LT(r.reference->hausdorff, 0.05);
+  for (const CollapseCost cost : kAllCosts) {
+    SCOPED_TRACE(static_cast<int>(cost));
+    SimplifyResult result;
+    const QualityReport r = simplified_quality(sphere, with_cost(cost), &result);
+    EXPECT_EQ(result.target_faces, 512u);
+    EXPECT_TRUE(result.reached_target);
+    EXPECT_TRUE(r.closed);
+    EXPECT_TRUE(r.manifold);
+    EXPECT_EQ(*r.genus, 0);
+    EXPECT_EQ(r.self_intersections, 0u);
+    // 512 faces on the unit sphere have edges of ~0.2 (sagitta e^2 / 8 ~ 0.005); the guarded
+    // costs keep them within ~2x of that length (0.02), quadric decimation leaves some ~0.5 long
+    // (0.03). A stray vertex would be ~0.1 off or more.
+    EXPECT_LT(r.reference->hausdorff, cost == CollapseCost::Quadric ? 0.05 : 0.02);
+  }
 }
 
-TEST(SimplifyQuadric, TorusKeepsGenus1) {
-  SimplifyParams p;
-  p.target_faces = 400;
+TEST(Simplify, GuardedCostsKeepEveryAngleAboveTheBound) {
+  // The icosphere's smallest angle is ~52 degrees, so the bound is min-angle itself; the quadric
+  // baseline has no guard (this is what the guard is for).
+  const TriangleSoup sphere = test::icosphere(4);
+  for (const CollapseCost cost : {CollapseCost::Bending, CollapseCost::Distance}) {
+    SimplifyResult result;
+    SimplifyParams p = with_cost(cost);
+    p.keep_ratio = 0.05;
+    const QualityReport r = simplified_quality(sphere, p, &result);
+    EXPECT_GE(r.min_angle_deg.min, p.min_angle_deg - 1e-9);
+    EXPECT_LE(r.radius_ratio.p95, 2.0);
+  }
   SimplifyResult result;
-  const QualityReport r = simplified_quality(test::torus(48, 24), p, &result);
-  EXPECT_TRUE(result.reached_target);
-  EXPECT_EQ(*r.genus, 1);
-  EXPECT_TRUE(r.manifold);
-}
-
-TEST(SimplifyQuadric, FlatGridCollapsesWithoutLeavingThePlane) {
-  TriMesh mesh = mesh_from_soup(test::grid(20));  // 800 faces in z = 0
-  SimplifyParams p;
+  SimplifyParams p = with_cost(CollapseCost::Quadric);
   p.keep_ratio = 0.05;
-  const SimplifyResult result = simplify(mesh, p);
-  EXPECT_LE(result.faces_after, 40u);
-  for (auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v)[2], 0.0);  // halfedge collapses stay in the plane
-  // OpenMesh's quadrics do not guard the border (the footprint may shrink): one loop remains.
-  EXPECT_EQ(analyze_quality(soup_from_mesh(mesh)).boundary_loops, 1u);
+  EXPECT_LT(simplified_quality(sphere, p, &result).min_angle_deg.min, 20.0);
 }
 
-TEST(SimplifyQuadric, BadParameters) {
+TEST(Simplify, TorusKeepsGenus1) {
+  for (const CollapseCost cost : kAllCosts) {
+    SimplifyParams p = with_cost(cost);
+    p.target_faces = 400;
+    SimplifyResult result;
+    const QualityReport r = simplified_quality(test::torus(48, 24), p, &result);
+    EXPECT_TRUE(result.reached_target);
+    EXPECT_EQ(*r.genus, 1);
+    EXPECT_TRUE(r.manifold);
+    EXPECT_EQ(r.self_intersections, 0u);
+  }
+}
+
+TEST(Simplify, FlatGridBecomesAFewTrianglesInThePlaneWithItsBorder) {
+  for (const CollapseCost cost : {CollapseCost::Bending, CollapseCost::Distance}) {
+    SCOPED_TRACE(static_cast<int>(cost));
+    TriMesh mesh = mesh_from_soup(test::grid(20));  // 800 faces, the square [0, 20]^2 in z = 0
+    SimplifyParams p = with_cost(cost);
+    p.target_faces = 2;
+    const SimplifyResult result = simplify(mesh, p);
+    EXPECT_LE(result.faces_after, 8u);
+    for (auto v : mesh.vertices()) EXPECT_NEAR(mesh.point(v)[2], 0.0, 1e-12);
+    // The boundary constraint planes keep the corners and the straight sides: same square.
+    const QualityReport r = analyze_quality(soup_from_mesh(mesh));
+    EXPECT_EQ(r.boundary_loops, 1u);
+    EXPECT_NEAR(r.area, 400.0, 1e-9);
+    EXPECT_NEAR(boundary_length(mesh), 80.0, 1e-9);
+  }
+}
+
+TEST(Simplify, OpenDiskKeepsItsBoundaryLoop) {
+  const TriangleSoup cap = spherical_cap(16, 64);  // 1984 faces; boundary: 64 points on a circle
+  const double circle = 2 * M_PI * std::sin(M_PI / 3);
+  TriMesh input = mesh_from_soup(cap);
+  const double before = boundary_length(input);
+  ASSERT_NEAR(before, circle, 0.01 * circle);
+  for (const CollapseCost cost : {CollapseCost::Bending, CollapseCost::Distance}) {
+    SimplifyParams p = with_cost(cost);
+    p.keep_ratio = 0.2;
+    SimplifyResult result;
+    TriMesh mesh;
+    const QualityReport r = simplified_quality(cap, p, &result, &mesh);
+    EXPECT_TRUE(result.reached_target);
+    EXPECT_EQ(r.boundary_loops, 1u);
+    // Removing every other boundary point of a 64-gon shortens it by 1 - cos(pi/64)... ~0.1 %;
+    // a boundary vertex pulled inwards would cost far more.
+    EXPECT_NEAR(boundary_length(mesh), before, 0.005 * before);
+    for (auto v : mesh.vertices()) {
+      if (!mesh.is_boundary(v)) continue;
+      EXPECT_NEAR(to_eigen(mesh.point(v)).head<2>().norm(), std::sin(M_PI / 3), 2e-3);
+    }
+  }
+}
+
+TEST(Simplify, MaxErrorStopsBeforeTheTarget) {
+  const TriangleSoup sphere = test::icosphere(4);
+  SimplifyParams p;
+  p.keep_ratio = 0.02;
+  p.max_error = 1e-3;  // of the diagonal 2 sqrt(3)
+  SimplifyResult result;
+  const QualityReport r = simplified_quality(sphere, p, &result);
+  EXPECT_FALSE(result.reached_target);
+  EXPECT_GT(result.rejected_error, 0u);
+  EXPECT_GT(result.faces_after, result.target_faces);
+  // The limit is the quadric's RMS estimate per vertex; the true distance stays of its order.
+  EXPECT_LT(r.reference->hausdorff_relative, 3e-3);
+}
+
+TEST(Simplify, SameInputSameOutput) {
+  const TriangleSoup torus = test::torus(40, 20);
+  TriMesh a = mesh_from_soup(torus), b = mesh_from_soup(torus);
+  SimplifyParams p;
+  p.keep_ratio = 0.2;
+  simplify(a, p);
+  simplify(b, p);
+  const TriangleSoup sa = soup_from_mesh(a), sb = soup_from_mesh(b);
+  EXPECT_EQ(sa.triangles, sb.triangles);
+  EXPECT_EQ(sa.points, sb.points);
+}
+
+TEST(Simplify, BadParameters) {
   TriMesh mesh = mesh_from_soup(test::cube());
   SimplifyParams p;
   p.keep_ratio = 1.5;
   EXPECT_THROW(simplify(mesh, p), InvalidInput);
+  p.keep_ratio = 0.5;
+  p.min_angle_deg = 60;
+  EXPECT_THROW(simplify(mesh, p), InvalidInput);
+  p.min_angle_deg = 20;
+  p.max_error = -1;
+  EXPECT_THROW(simplify(mesh, p), InvalidInput);
   TriMesh empty;
   EXPECT_THROW(simplify(empty, {}), InvalidInput);
+}
+
+TEST(BendingEnergy, AffineDeformationCostsNothingABumpDoes) {
+  // The volume spline reproduces the affine part: mapping the centres by any affine map has zero
+  // bending energy (up to round-off), while lifting one centre off the rest (a bump) costs energy.
+  const TriangleSoup sphere = test::icosphere(1);
+  std::vector<Vec3> source(sphere.points.begin(), sphere.points.begin() + 12);
+  Eigen::Matrix3d linear;
+  linear << 1.2, 0.3, -0.1, 0.0, 0.8, 0.4, 0.2, -0.5, 1.1;
+  std::vector<Vec3> affine, bump = source;
+  for (const Vec3& p : source) affine.push_back(linear * p + Vec3(3, -1, 2));
+  bump[0] += 0.2 * source[0];
+  const SlidingLandmarks none_affine = relax_sliding_landmarks(source, affine, {}, {});
+  const SlidingLandmarks none_bump = relax_sliding_landmarks(source, bump, {}, {});
+  EXPECT_LT(none_affine.bending_energy, 1e-10);
+  EXPECT_GT(none_bump.bending_energy, 1e-3);
 }

@@ -1,5 +1,7 @@
 #include "meshprep/preprocess/sliding_landmarks.h"
 
+#include "collapse_energy_block.h"
+
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/thin_plate_spline.h"
 
@@ -55,7 +57,8 @@ SlidingLandmarks relax_sliding_landmarks(const std::vector<Vec3>& source, const 
   }
 
   SlidingLandmarks result;
-  result.t = -normal_matrix.completeOrthogonalDecomposition().solve(rhs);
+  // No sliding landmark: T is empty and J is the energy of the map itself (COD needs a non-empty matrix).
+  if (k > 0) result.t = -normal_matrix.completeOrthogonalDecomposition().solve(rhs);
   result.relaxed = target;
   for (Index j = 0; j < k; ++j)
     result.relaxed[sliding[static_cast<std::size_t>(j)]] += result.t[j] * directions[static_cast<std::size_t>(j)];
@@ -64,15 +67,27 @@ SlidingLandmarks relax_sliding_landmarks(const std::vector<Vec3>& source, const 
   return result;
 }
 
-CollapseEnergy::CollapseEnergy(const std::vector<Vec3>& centres, std::size_t a, std::size_t b) {
+CollapseEnergy::CollapseEnergy(const std::vector<Vec3>& centres, std::size_t a, std::size_t b)
+    : CollapseEnergy(centres.data(), centres.size(), a, b) {}
+
+CollapseEnergy::CollapseEnergy(const Vec3* centres, std::size_t count, std::size_t a, std::size_t b) {
   constexpr const char* who = "CollapseEnergy";
-  check_index(a, centres.size(), who);
-  check_index(b, centres.size(), who);
+  check_index(a, count, who);
+  check_index(b, count, who);
   if (a == b) throw InvalidInput(std::string(who) + ": the edge's end points are the same index");
-  const Eigen::MatrixXd energy = volume_spline_energy_matrix(centres);
-  const Index ia = static_cast<Index>(a), ib = static_cast<Index>(b);
   a_ = centres[a];
   b_ = centres[b];
+  if (count >= 4 && count <= static_cast<std::size_t>(detail::kMaxBlockCentres)) {
+    // The common case (a mesh edge's two 1-rings): only three entries of E, no heap allocation.
+    const detail::EnergyBlock block =
+        detail::collapse_energy_block(centres, static_cast<int>(count), static_cast<int>(a), static_cast<int>(b));
+    e_aa_ = block.aa;
+    e_ab_ = block.ab;
+    e_bb_ = block.bb;
+    return;
+  }
+  const Eigen::MatrixXd energy = volume_spline_energy_matrix(std::vector<Vec3>(centres, centres + count));
+  const Index ia = static_cast<Index>(a), ib = static_cast<Index>(b);
   e_aa_ = energy(ia, ia);
   e_ab_ = energy(ia, ib);
   e_bb_ = energy(ib, ib);

@@ -1,34 +1,73 @@
 #pragma once
 /// \file simplify.h
-/// Reducing a triangle mesh to a target size by iterative edge collapse.
+/// Reducing a triangle mesh to a target size by iterative edge collapse (Section 4 of the paper).
 ///
-/// Status: only the baseline cost is in so far — OpenMesh's own Decimater with ModQuadric
-/// (Garland-Heckbert quadrics) and ModNormalFlipping, the peer every other cost is measured
-/// against. The paper's bending-energy cost (Section 4) builds on sliding_landmarks.h and
-/// local_height_map.h and comes next.
+/// The costs (docs/simplification.md has the measurements behind every choice):
+/// - CollapseCost::Bending (default): the paper's bending energy J of the volume spline over the
+///   union of the edge's two 1-rings, with the sliding-landmark optimal point, used as a shape
+///   factor on an error memory: cost = Q(p) (1 + mu J / |e|) + eps J |e|, Q the area-weighted
+///   Garland-Heckbert quadric accumulated over the collapses, p the point minimising Q. J alone
+///   orders edges by length, not by curvature (measured: 10x the Hausdorff distance), so it
+///   cannot be the whole cost.
+/// - CollapseCost::Distance: the paper's simple cost, the shortest distance between the central
+///   point and its neighbours (the edge length), placed at the sliding-landmark point on the edge
+///   and projected onto the local RBF height map (eq. 3) in the PCA tangent frame.
+/// - CollapseCost::Quadric: OpenMesh's own Decimater + ModQuadric + ModNormalFlipping, the
+///   baseline every other cost is measured against (no shape guard, no polish).
+///
+/// Safety, always on (Bending and Distance): OpenMesh's link condition (is_collapse_ok) keeps the
+/// topology (closed stays closed, manifold stays manifold, genus unchanged); no face normal may
+/// turn by more than 90 degrees or become degenerate; boundary vertices stay on the boundary and
+/// non-manifold vertices are never moved; a collapse whose new faces have a smallest angle below
+/// min(min_angle_deg, the old smallest angle around the edge) is refused.
 
 #include "meshprep/core/mesh.h"
+
+#include <cstddef>
+#include <functional>
 
 namespace meshprep {
 
 enum class CollapseCost {
-  Quadric,  ///< OpenMesh Decimater + ModQuadric + ModNormalFlipping (baseline)
+  Bending,   ///< quadric error x bending-energy shape factor, free quadric placement
+  Distance,  ///< shortest edge first, sliding-landmark point projected onto the local height map
+  Quadric,   ///< OpenMesh Decimater + ModQuadric + ModNormalFlipping (baseline)
 };
 
 struct SimplifyParams {
   double keep_ratio = 0.1;        ///< fraction of the faces kept, (0, 1]; ignored if target_faces > 0
   std::size_t target_faces = 0;   ///< absolute target; 0 = use keep_ratio
-  CollapseCost cost = CollapseCost::Quadric;
+  CollapseCost cost = CollapseCost::Bending;
+  /// Smallest angle (degrees) a collapse may create, unless the faces around the edge already
+  /// had a smaller one (then that is the bound). 0 disables the guard.
+  double min_angle_deg = 20;
+  /// Largest quadric estimate of the local deviation a collapse may reach, relative to the
+  /// bounding-box diagonal (the RMS distance of the new vertex to the planes of the original
+  /// faces it replaces). 0 = no limit; the target may then not be reached.
+  double max_error = 0;
+  /// After collapsing: edge flips and tangential relaxation that improve the smallest angles
+  /// while staying within a quadric tolerance of the surface, each sweep followed by a
+  /// least-squares fit of the vertices to the original surface along their normals (Bending and
+  /// Distance only).
+  bool polish = true;
+  /// Called with the fraction of the work done, in [0, 1].
+  std::function<void(double)> progress;
 };
 
 struct SimplifyResult {
   std::size_t faces_before = 0, faces_after = 0, target_faces = 0;
   bool reached_target = false;  ///< faces_after within 1 % of the target
-  double seconds = 0;           ///< the decimation itself
+  double seconds = 0;           ///< the decimation itself (and the polish)
+  std::size_t collapses = 0;
+  std::size_t rejected_topology = 0;  ///< link condition or locked vertex
+  std::size_t rejected_shape = 0;     ///< normal flip, degenerate face or smallest angle
+  std::size_t rejected_error = 0;     ///< over max_error
+  std::size_t energy_evaluations = 0; ///< bending energies computed
+  std::size_t polish_flips = 0, polish_moves = 0;  ///< shape polish: edge flips, relaxation moves
+  std::size_t fit_moves = 0;                        ///< least-squares fit to the original: vertex moves
 };
 
-/// Simplify `mesh` in place (garbage-collected on return). Topology-changing collapses are
-/// refused by OpenMesh's link-condition test, so a closed manifold stays closed and manifold.
+/// Simplify `mesh` in place (garbage-collected on return).
 /// \throws InvalidInput if the mesh has no faces or the ratio is outside (0, 1].
 SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params = {});
 

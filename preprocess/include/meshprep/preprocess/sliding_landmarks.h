@@ -55,6 +55,8 @@ class CollapseEnergy {
  public:
   /// \throws InvalidInput if a == b, an index is out of range, or as VolumeSpline.
   CollapseEnergy(const std::vector<Vec3>& centres, std::size_t a, std::size_t b);
+  /// The same on `count` centres in an array (no heap allocation up to 40 centres).
+  CollapseEnergy(const Vec3* centres, std::size_t count, std::size_t a, std::size_t b);
 
   /// J(s); J(0) collapses onto P_a, J(1) onto P_b.
   double at(double s) const;

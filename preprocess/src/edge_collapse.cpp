@@ -1,0 +1,376 @@
+#include "edge_collapse.h"
+
+#include "collapse_energy_block.h"
+#include "triangle_angles.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/preprocess/local_height_map.h"
+#include "meshprep/preprocess/sliding_landmarks.h"
+
+#include <OpenMesh/Tools/Utils/HeapT.hh>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace meshprep::detail {
+namespace {
+
+using VertexHandle = TriMesh::VertexHandle;
+using EdgeHandle = TriMesh::EdgeHandle;
+using HalfedgeHandle = TriMesh::HalfedgeHandle;
+
+// Bending cost = Q (1 + mu Jhat) + eps Jhat (|e| / L)^2 with Jhat = (J / |e|) / median(J / |e|):
+// mu and eps are the best of the prototype sweep (docs/simplification.md); the product form is
+// scale-free where a fixed weight J + w Q needed w = 3 at 10 % and w = 300 at 30 %.
+constexpr double kShapeWeight = 3.0;
+constexpr double kShapeTieBreak = 1e-6;
+// A collapse refused by the shape guard is tried again later (its neighbours may have moved) at
+// this multiple of its cost, at most this many times before its neighbourhood changes.
+constexpr double kRetryPenalty = 2.0;
+constexpr unsigned char kMaxRetries = 3;
+// A quadric minimiser farther than this many edge lengths from the midpoint is not trusted.
+constexpr double kFarPlacement = 2.0;
+// A face whose doubled area is below this fraction of its squared perimeter is degenerate.
+constexpr double kDegenerateArea = 1e-10;
+
+// Per-edge queue state for OpenMesh's indexed heap (one entry per edge, updated in place).
+struct EdgeQueueState {
+  std::vector<double> cost;
+  std::vector<int> heap_position;
+  std::vector<char> complete;  // 0: cost is a lower bound (quadric part only, or no placement yet)
+};
+
+struct EdgeHeapInterface {
+  EdgeQueueState* state;
+  bool less(int a, int b) { return state->cost[static_cast<std::size_t>(a)] < state->cost[static_cast<std::size_t>(b)]; }
+  bool greater(int a, int b) { return state->cost[static_cast<std::size_t>(a)] > state->cost[static_cast<std::size_t>(b)]; }
+  int get_heap_position(int e) { return state->heap_position[static_cast<std::size_t>(e)]; }
+  void set_heap_position(int e, int position) { state->heap_position[static_cast<std::size_t>(e)] = position; }
+};
+
+// The centres of the local spline: the edge's end points (indices 0 and 1), then the union of
+// their 1-rings. Returns the count, or 0 if there are more than kMaxBlockCentres.
+int ring_union(const TriMesh& mesh, VertexHandle a, VertexHandle b, Vec3* centres) {
+  VertexHandle members[kMaxBlockCentres];
+  int n = 0;
+  members[n] = a;
+  centres[n++] = to_eigen(mesh.point(a));
+  members[n] = b;
+  centres[n++] = to_eigen(mesh.point(b));
+  for (const VertexHandle end : {a, b}) {
+    for (const VertexHandle w : mesh.vv_range(end)) {
+      if (std::find(members, members + n, w) != members + n) continue;
+      if (n == kMaxBlockCentres) return 0;
+      members[n] = w;
+      centres[n++] = to_eigen(mesh.point(w));
+    }
+  }
+  return n;
+}
+
+// J(s*) of the edge's optimal point on its line (sliding_landmarks.h); nullopt-like NaN when the
+// spline is undefined (collinear or coincident centres, or an oversized ring).
+struct EdgeEnergy {
+  double energy = std::numeric_limits<double>::quiet_NaN();
+  Vec3 point = Vec3::Zero();
+};
+
+EdgeEnergy edge_energy(const TriMesh& mesh, VertexHandle a, VertexHandle b, std::vector<Vec3>* neighbourhood) {
+  Vec3 centres[kMaxBlockCentres];
+  const int n = ring_union(mesh, a, b, centres);
+  EdgeEnergy result;
+  if (n < 4) return result;
+  try {
+    const CollapseEnergy energy(centres, static_cast<std::size_t>(n), 0, 1);
+    const double s = energy.optimal_parameter();
+    result.energy = energy.at(s);
+    result.point = energy.point(s);
+  } catch (const Error&) {
+    return result;
+  }
+  if (neighbourhood) neighbourhood->assign(centres, centres + n);
+  return result;
+}
+
+class Collapser {
+ public:
+  Collapser(TriMesh& mesh, const SimplifyParams& params, const CollapseScales& scales, std::vector<Quadric>& quadrics,
+            SimplifyResult& result)
+      : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), result_(result),
+        retries_(mesh.n_edges(), 0), placement_(mesh.n_edges(), Vec3::Zero()),
+        locked_(mesh.n_vertices(), 0),
+        min_angle_cosine_(params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 2.0) {
+    for (const VertexHandle v : mesh_.vertices()) locked_[idx(v)] = !mesh_.is_manifold(v);
+    state_.cost.assign(mesh.n_edges(), 0.0);
+    state_.heap_position.assign(mesh.n_edges(), -1);
+    state_.complete.assign(mesh.n_edges(), 0);
+    quadric_cost_.assign(mesh.n_edges(), 0.0);
+    shape_.assign(mesh.n_edges(), 0.0);
+    heap_.reserve(mesh.n_edges());
+  }
+
+  void run(std::size_t target) {
+    for (const EdgeHandle e : mesh_.edges()) push(e);
+    const std::size_t faces_before = mesh_.n_faces();
+    std::size_t faces = faces_before;
+    const std::size_t to_remove = faces > target ? faces - target : 0;
+    while (faces > target && !heap_.empty()) {
+      const int edge = heap_.front();
+      const EdgeHandle e(edge);
+      const std::size_t i = idx(e);
+      if (!state_.complete[i]) {
+        state_.cost[i] = complete_cost(e);
+        state_.complete[i] = 1;
+        heap_.update(edge);
+        if (heap_.front() != edge) continue;
+      }
+      const HalfedgeHandle h = collapse_direction(e);
+      if (!h.is_valid()) {
+        ++result_.rejected_topology;
+        heap_.pop_front();  // back in the queue when its neighbourhood changes
+        continue;
+      }
+      const Vec3 p = placement_[i];
+      if (!shape_ok(h, p)) {
+        ++result_.rejected_shape;
+        if (retries_[i]++ < kMaxRetries) {
+          state_.cost[i] = state_.cost[i] * kRetryPenalty + std::numeric_limits<double>::min();
+          heap_.update(edge);
+        } else {
+          heap_.pop_front();
+        }
+        continue;
+      }
+      const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
+      Quadric merged = quadrics_[idx(kept)];
+      merged += quadrics_[idx(removed)];
+      if (params_.max_error > 0 && rms_plane_distance(merged, p) > params_.max_error * scales_.diagonal) {
+        ++result_.rejected_error;
+        heap_.pop_front();
+        continue;
+      }
+      faces -= mesh_.is_boundary(e) ? 1 : 2;
+      quadrics_[idx(kept)] = merged;
+      // The collapse deletes some of these edges and re-attaches the others to `kept`.
+      for (const VertexHandle end : {removed, kept})
+        for (const EdgeHandle around : mesh_.ve_range(end))
+          if (heap_.is_stored(around.idx())) heap_.remove(around.idx());
+      mesh_.collapse(h);
+      mesh_.set_point(kept, to_openmesh(p));
+      ++result_.collapses;
+      for (const EdgeHandle around : mesh_.ve_range(kept)) push(around);
+      if (params_.progress && result_.collapses % 1024 == 0)
+        params_.progress(static_cast<double>(faces_before - faces) / static_cast<double>(to_remove));
+    }
+  }
+
+ private:
+  template <class Handle>
+  static std::size_t idx(Handle h) {
+    return static_cast<std::size_t>(h.idx());
+  }
+  Vec3 point(VertexHandle v) const { return to_eigen(mesh_.point(v)); }
+
+  // The end point that must stay: a boundary vertex collapsing with an interior one keeps its place.
+  VertexHandle pinned_end(VertexHandle a, VertexHandle b) const {
+    const bool boundary_a = mesh_.is_boundary(a), boundary_b = mesh_.is_boundary(b);
+    if (boundary_a != boundary_b) return boundary_a ? a : b;
+    return VertexHandle();
+  }
+
+  // Queue the edge with an estimate of its cost: Bending's quadric part (cheap, exact) with the
+  // edge's last known bending energy (0 before the first evaluation); Distance's exact cost. The
+  // edge is completed when it reaches the front (a fresh energy, or Distance's placement) and goes
+  // back into the queue if it is no longer the cheapest: J is only computed for edges near the
+  // front, which halves the evaluations.
+  void push(EdgeHandle e) {
+    const std::size_t i = idx(e);
+    retries_[i] = 0;
+    state_.complete[i] = 0;
+    const HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
+    const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+    if (locked_[idx(a)] || locked_[idx(b)]) return;
+    const Vec3 pa = point(a), pb = point(b);
+    const double length = (pb - pa).norm();
+    if (params_.cost == CollapseCost::Distance) {
+      enqueue(e, length / scales_.edge_length);
+      return;
+    }
+    Quadric q = quadrics_[idx(a)];
+    q += quadrics_[idx(b)];
+    const VertexHandle pinned = pinned_end(a, b);
+    Vec3 p;
+    if (pinned.is_valid()) {
+      p = point(pinned);
+    } else {
+      const Vec3 middle = 0.5 * (pa + pb);
+      p = minimiser_near(q, middle);
+      if (!((p - middle).norm() <= kFarPlacement * length)) {
+        p = middle;
+        for (const Vec3& end : {pa, pb})
+          if (evaluate(q, end) < evaluate(q, p)) p = end;
+      }
+    }
+    placement_[i] = p;
+    quadric_cost_[i] = evaluate(q, p) / (scales_.edge_length * scales_.edge_length);
+    enqueue(e, bending_cost(i, length));
+  }
+
+  void enqueue(EdgeHandle e, double cost) {
+    state_.cost[idx(e)] = cost;
+    if (heap_.is_stored(e.idx()))
+      heap_.update(e.idx());
+    else
+      heap_.insert(e.idx());
+  }
+
+  // Bending: the lower bound times the bending-energy shape factor. Distance: the placement.
+  double complete_cost(EdgeHandle e) {
+    const HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
+    const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+    const double length = (point(b) - point(a)).norm();
+    const std::size_t i = idx(e);
+    ++result_.energy_evaluations;
+    if (params_.cost == CollapseCost::Distance) {
+      placement_[i] = distance_placement(a, b, length);
+      return state_.cost[i];
+    }
+    const EdgeEnergy energy = edge_energy(mesh_, a, b, nullptr);
+    shape_[i] = std::isfinite(energy.energy) && length > 0 ? (energy.energy / length) / scales_.energy_per_length : 0.0;
+    return bending_cost(i, length);
+  }
+
+  // Q (1 + mu Jhat) + eps Jhat (|e| / L)^2, with the edge's last known Jhat until it is recomputed.
+  double bending_cost(std::size_t i, double length) const {
+    const double relative_length = length / scales_.edge_length;
+    return quadric_cost_[i] * (1 + kShapeWeight * shape_[i]) + kShapeTieBreak * shape_[i] * relative_length * relative_length;
+  }
+
+  // The paper's placement: the sliding-landmark point on the edge, then the local RBF height map.
+  Vec3 distance_placement(VertexHandle a, VertexHandle b, double length) {
+    const VertexHandle pinned = pinned_end(a, b);
+    if (pinned.is_valid()) return point(pinned);
+    if (mesh_.is_boundary(a) && mesh_.is_boundary(b)) {
+      // Along the boundary: the end point the boundary constraint planes prefer (a corner stays).
+      Quadric q = quadrics_[idx(a)];
+      q += quadrics_[idx(b)];
+      return evaluate(q, point(a)) <= evaluate(q, point(b)) ? point(a) : point(b);
+    }
+    const EdgeEnergy energy = edge_energy(mesh_, a, b, &neighbourhood_);
+    if (!std::isfinite(energy.energy)) return 0.5 * (point(a) + point(b));
+    try {
+      const Vec3 projected = project_to_local_surface(neighbourhood_, energy.point);
+      if ((projected - energy.point).norm() < 0.5 * length) return projected;
+    } catch (const Error&) {
+    }
+    return energy.point;
+  }
+
+  // The halfedge to collapse (from the removed vertex to the kept one), invalid if neither
+  // direction passes the link condition or a boundary vertex would leave the boundary.
+  HalfedgeHandle collapse_direction(EdgeHandle e) {
+    const HalfedgeHandle h0 = mesh_.halfedge_handle(e, 0), h1 = mesh_.halfedge_handle(e, 1);
+    const VertexHandle a = mesh_.from_vertex_handle(h0), b = mesh_.to_vertex_handle(h0);
+    if (locked_[idx(a)] || locked_[idx(b)]) return HalfedgeHandle();
+    const VertexHandle pinned = pinned_end(a, b);
+    if (pinned.is_valid()) {
+      const HalfedgeHandle h = pinned == b ? h0 : h1;
+      return mesh_.is_collapse_ok(h) ? h : HalfedgeHandle();
+    }
+    if (mesh_.is_collapse_ok(h0)) return h0;
+    if (mesh_.is_collapse_ok(h1)) return h1;
+    return HalfedgeHandle();
+  }
+
+  // The faces that survive the collapse of h with its vertices at p: none may flip by more than
+  // 90 degrees or become degenerate, and their smallest angle may not fall below
+  // min(min_angle_deg, the smallest angle of the faces around the edge before).
+  bool shape_ok(HalfedgeHandle h, const Vec3& p) const {
+    const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
+    double old_cosine = -1, new_cosine = -1;
+    for (const VertexHandle end : {removed, kept}) {
+      for (const auto f : mesh_.vf_range(end)) {
+        Vec3 before[3], after[3];
+        int k = 0;
+        bool has_removed = false, has_kept = false;
+        for (const VertexHandle w : mesh_.fv_range(f)) {
+          before[k] = point(w);
+          has_removed |= w == removed;
+          has_kept |= w == kept;
+          after[k++] = (w == removed || w == kept) ? p : point(w);
+        }
+        old_cosine = std::max(old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
+        if (has_removed && has_kept) continue;  // one of the two faces the collapse deletes
+        const Vec3 n0 = area_normal(before[0], before[1], before[2]);
+        const Vec3 n1 = area_normal(after[0], after[1], after[2]);
+        const double perimeter = (after[1] - after[0]).norm() + (after[2] - after[1]).norm() +
+                                 (after[0] - after[2]).norm();
+        if (!(n1.norm() > kDegenerateArea * perimeter * perimeter)) return false;
+        if (n0.dot(n1) <= 0) return false;
+        new_cosine = std::max(new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
+      }
+    }
+    return new_cosine <= std::max(min_angle_cosine_, old_cosine) + 1e-12;
+  }
+
+  TriMesh& mesh_;
+  const SimplifyParams& params_;
+  const CollapseScales& scales_;
+  std::vector<Quadric>& quadrics_;
+  SimplifyResult& result_;
+  std::vector<unsigned char> retries_;
+  std::vector<Vec3> placement_;
+  std::vector<char> locked_;  // non-manifold vertices: never moved
+  double min_angle_cosine_;
+  EdgeQueueState state_;
+  std::vector<double> quadric_cost_;  // Q(p) / L^2 at the edge's placement
+  std::vector<double> shape_;         // Jhat, the dimensionless bending energy, as last computed
+  OpenMesh::Utils::HeapT<int, EdgeHeapInterface> heap_{EdgeHeapInterface{&state_}};
+  std::vector<Vec3> neighbourhood_;
+};
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+}  // namespace
+
+CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost) {
+  CollapseScales scales;
+  std::vector<double> lengths;
+  lengths.reserve(mesh.n_edges());
+  for (const EdgeHandle e : mesh.edges()) lengths.push_back(mesh.calc_edge_length(e));
+  scales.edge_length = median(lengths);
+  if (!(scales.edge_length > 0)) throw InvalidInput("the mesh's edges have zero length");
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const VertexHandle v : mesh.vertices()) {
+    low = low.cwiseMin(to_eigen(mesh.point(v)));
+    high = high.cwiseMax(to_eigen(mesh.point(v)));
+  }
+  scales.diagonal = (high - low).norm();
+  if (cost != CollapseCost::Bending) return scales;
+  // J / |e| on about 2000 evenly spread edges: enough for a stable median.
+  const std::size_t stride = std::max<std::size_t>(1, mesh.n_edges() / 2000);
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < mesh.n_edges(); i += stride) {
+    const EdgeHandle e(static_cast<int>(i));
+    const HalfedgeHandle h = mesh.halfedge_handle(e, 0);
+    const double length = mesh.calc_edge_length(e);
+    const EdgeEnergy energy = edge_energy(mesh, mesh.from_vertex_handle(h), mesh.to_vertex_handle(h), nullptr);
+    if (std::isfinite(energy.energy) && length > 0) ratios.push_back(energy.energy / length);
+  }
+  const double typical = median(std::move(ratios));
+  scales.energy_per_length = typical > 0 ? typical : 1.0;
+  return scales;
+}
+
+void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
+                    std::vector<Quadric>& quadrics, SimplifyResult& result) {
+  Collapser(mesh, params, scales, quadrics, result).run(target);
+}
+
+}  // namespace meshprep::detail

@@ -1,0 +1,29 @@
+#pragma once
+// The collapse loop behind CollapseCost::Bending and CollapseCost::Distance: a priority queue of
+// edges with lazily completed costs, the safety guards, and the quadric memory.
+
+#include "collapse_quadrics.h"
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/preprocess/simplify.h"
+
+#include <vector>
+
+namespace meshprep::detail {
+
+/// Scales measured once on the input, so every cost is dimensionless.
+struct CollapseScales {
+  double edge_length = 1;     ///< median edge length
+  double energy_per_length = 1;  ///< median J / |e| over a sample of edges (Bending)
+  double diagonal = 1;        ///< bounding-box diagonal
+};
+
+CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost);
+
+/// Collapse edges until `target` faces remain or no edge may go. `quadrics` (vertex_quadrics)
+/// are accumulated into the kept vertices. The mesh is not garbage-collected. Fills the counters
+/// of `result` (collapses, rejections, energy evaluations).
+void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
+                    std::vector<Quadric>& quadrics, SimplifyResult& result);
+
+}  // namespace meshprep::detail

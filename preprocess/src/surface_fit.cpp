@@ -1,0 +1,80 @@
+#include "surface_fit.h"
+
+#include "triangle_angles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace meshprep::detail {
+namespace {
+
+using VertexHandle = TriMesh::VertexHandle;
+
+const double kTurnCosine = std::cos(30.0 * M_PI / 180.0);
+constexpr double kStepCap = 0.25;  // of the shortest edge at the vertex
+
+Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
+
+// Sums of the least-squares step along the normal: t = -sum w n.r / sum w^2.
+struct NormalStep {
+  Vec3 weighted_residual = Vec3::Zero();  // sum w (p - c)
+  double weight_squares = 0;              // sum w^2
+  void add(const TriangleBvh& reference, const Vec3& p, double weight) {
+    weighted_residual += weight * (p - reference.closest_point(p).point);
+    weight_squares += weight * weight;
+  }
+};
+
+bool no_face_turns(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to) {
+  for (const auto f : mesh.vf_range(v)) {
+    Vec3 before[3], after[3];
+    int k = 0;
+    for (const VertexHandle w : mesh.fv_range(f)) {
+      before[k] = point(mesh, w);
+      after[k] = w == v ? moved_to : before[k];
+      ++k;
+    }
+    const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
+    if (n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference) {
+  std::size_t moved = 0;
+  for (const VertexHandle v : mesh.vertices()) {
+    if (mesh.status(v).deleted() || mesh.is_boundary(v) || !mesh.is_manifold(v) || mesh.valence(v) < 3) continue;
+    const Vec3 x = point(mesh, v);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const VertexHandle w : mesh.vv_range(v)) shortest = std::min(shortest, (point(mesh, w) - x).norm());
+    Vec3 normal = Vec3::Zero();
+    NormalStep step;
+    step.add(reference, x, 1.0);
+    for (const auto f : mesh.vf_range(v)) {
+      Vec3 corners[3];
+      int k = 0, own = 0;
+      for (const VertexHandle w : mesh.fv_range(f)) {
+        if (w == v) own = k;
+        corners[k++] = point(mesh, w);
+      }
+      normal += area_normal(corners[0], corners[1], corners[2]);
+      const Vec3 others = corners[(own + 1) % 3] + corners[(own + 2) % 3];
+      step.add(reference, (x + others) / 3.0, 1.0 / 3.0);
+      step.add(reference, (4.0 * x + others) / 6.0, 2.0 / 3.0);
+    }
+    if (!(normal.norm() > 0)) continue;
+    normal.normalize();
+    const double limit = kStepCap * shortest;
+    const double t = std::clamp(-normal.dot(step.weighted_residual) / step.weight_squares, -limit, limit);
+    const Vec3 y = x + t * normal;
+    if (t == 0 || !no_face_turns(mesh, v, y)) continue;
+    mesh.set_point(v, to_openmesh(y));
+    ++moved;
+  }
+  return moved;
+}
+
+}  // namespace meshprep::detail
