@@ -18,8 +18,8 @@ struct PolishCounts {
 /// One round of (1) flips of nearly flat interior edges (both dihedral angles, before and
 /// after, under 10 degrees) that raise the smaller of the two faces' smallest angles and whose
 /// two diagonals lie within `tolerance` of each other along the normal; then (2) a Gauss-Seidel
-/// sweep moving each interior manifold vertex that is not on a sharp edge (dihedral angle over 30
-/// degrees) to its 1-ring centroid in its tangent plane, then
+/// sweep moving each interior manifold vertex that is not on a feature (surface variation sigma
+/// of its 1-ring over that of a 30-degree crease) to its 1-ring centroid in its tangent plane, then
 /// along its normal to the minimum of its quadric, kept only if the smallest angle around it
 /// improves, no face turns by more than 60 degrees, and the quadric's RMS plane distance stays
 /// under `tolerance` (or does not grow).

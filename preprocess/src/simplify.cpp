@@ -68,11 +68,12 @@ void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyR
   if (!params.polish) return;
   const TriangleBvh reference(original);
   const double tolerance = kPolishTolerance * typical_error(mesh, quadrics);
+  const double min_angle_cosine = params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 1.0;
   for (int sweep = 0; sweep < kPolishSweeps; ++sweep) {
     const detail::PolishCounts polish = detail::polish_shape(mesh, quadrics, tolerance);
     result.polish_flips += polish.flips;
     result.polish_moves += polish.moves;
-    result.fit_moves += detail::fit_to_reference(mesh, reference);
+    result.fit_moves += detail::fit_to_reference(mesh, reference, min_angle_cosine);
   }
 }
 

@@ -26,7 +26,10 @@ struct NormalStep {
   }
 };
 
-bool no_face_turns(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to) {
+// The move keeps every face within 30 degrees of its normal and does not take a smallest angle
+// below min(the guard's bound, what it was).
+bool move_keeps_shape(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to, double min_angle_cosine) {
+  double old_cosine = -1, new_cosine = -1;
   for (const auto f : mesh.vf_range(v)) {
     Vec3 before[3], after[3];
     int k = 0;
@@ -37,13 +40,15 @@ bool no_face_turns(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to) {
     }
     const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
     if (n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm()) return false;
+    old_cosine = std::max(old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
+    new_cosine = std::max(new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
   }
-  return true;
+  return new_cosine <= std::max(min_angle_cosine, old_cosine);
 }
 
 }  // namespace
 
-std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference) {
+std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine) {
   std::size_t moved = 0;
   for (const VertexHandle v : mesh.vertices()) {
     if (mesh.status(v).deleted() || mesh.is_boundary(v) || !mesh.is_manifold(v) || mesh.valence(v) < 3) continue;
@@ -70,7 +75,7 @@ std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference) {
     const double limit = kStepCap * shortest;
     const double t = std::clamp(-normal.dot(step.weighted_residual) / step.weight_squares, -limit, limit);
     const Vec3 y = x + t * normal;
-    if (t == 0 || !no_face_turns(mesh, v, y)) continue;
+    if (t == 0 || !move_keeps_shape(mesh, v, y, min_angle_cosine)) continue;
     mesh.set_point(v, to_openmesh(y));
     ++moved;
   }

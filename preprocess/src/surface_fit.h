@@ -15,7 +15,8 @@ namespace meshprep::detail {
 /// its faces (v itself with w = 1, the face centroids with w = 1/3, the points (2/3, 1/6, 1/6)
 /// with w = 2/3), c_s the closest point of `reference` to p_s and w_s the barycentric weight of v
 /// at p_s. The step is capped at a quarter of the shortest edge at v and refused if a face would
-/// turn by more than 30 degrees. Returns the number of vertices moved.
-std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference);
+/// turn by more than 30 degrees or a smallest angle would drop below min(the angle whose cosine is
+/// `min_angle_cosine`, its value before). Returns the number of vertices moved.
+std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine);
 
 }  // namespace meshprep::detail
