@@ -49,36 +49,48 @@ struct EdgeHeapInterface {
   void set_heap_position(int e, int position) { state->heap_position[static_cast<std::size_t>(e)] = position; }
 };
 
-// The centres of the local spline: the edge's end points (indices 0 and 1), then the union of
-// their 1-rings. Returns the count, or 0 if there are more than kMaxBlockCentres.
-int ring_union(const TriMesh& mesh, VertexHandle a, VertexHandle b, Vec3* centres) {
-  VertexHandle members[kMaxBlockCentres];
-  int n = 0;
-  members[n] = a;
-  centres[n++] = to_eigen(mesh.point(a));
-  members[n] = b;
-  centres[n++] = to_eigen(mesh.point(b));
-  for (const VertexHandle end : {a, b}) {
-    for (const VertexHandle w : mesh.vv_range(end)) {
-      if (std::find(members, members + n, w) != members + n) continue;
-      if (n == kMaxBlockCentres) return 0;
-      members[n] = w;
-      centres[n++] = to_eigen(mesh.point(w));
-    }
-  }
-  return n;
-}
+// Gathers the centres of an edge's local spline: its end points (indices 0 and 1), then the union
+// of their 1-rings, de-duplicated with a per-vertex stamp (no search).
+class RingUnion {
+ public:
+  explicit RingUnion(const TriMesh& mesh) : mesh_(mesh), stamp_(mesh.n_vertices(), 0) {}
 
-// J(s*) of the edge's optimal point on its line (sliding_landmarks.h); nullopt-like NaN when the
-// spline is undefined (collinear or coincident centres, or an oversized ring).
+  // Returns the count, or 0 if there are more than kMaxBlockCentres.
+  int gather(VertexHandle a, VertexHandle b, Vec3* centres) {
+    ++current_;
+    int n = 0;
+    for (const VertexHandle end : {a, b}) {
+      stamp_[static_cast<std::size_t>(end.idx())] = current_;
+      centres[n++] = to_eigen(mesh_.point(end));
+    }
+    for (const VertexHandle end : {a, b}) {
+      for (const VertexHandle w : mesh_.vv_range(end)) {
+        unsigned& seen = stamp_[static_cast<std::size_t>(w.idx())];
+        if (seen == current_) continue;
+        if (n == kMaxBlockCentres) return 0;
+        seen = current_;
+        centres[n++] = to_eigen(mesh_.point(w));
+      }
+    }
+    return n;
+  }
+
+ private:
+  const TriMesh& mesh_;
+  std::vector<unsigned> stamp_;
+  unsigned current_ = 0;
+};
+
+// J(s*) of the edge's optimal point on its line (sliding_landmarks.h); NaN when the spline is
+// undefined (collinear or coincident centres, or an oversized ring).
 struct EdgeEnergy {
   double energy = std::numeric_limits<double>::quiet_NaN();
   Vec3 point = Vec3::Zero();
 };
 
-EdgeEnergy edge_energy(const TriMesh& mesh, VertexHandle a, VertexHandle b, std::vector<Vec3>* neighbourhood) {
+EdgeEnergy edge_energy(RingUnion& rings, VertexHandle a, VertexHandle b, std::vector<Vec3>* neighbourhood) {
   Vec3 centres[kMaxBlockCentres];
-  const int n = ring_union(mesh, a, b, centres);
+  const int n = rings.gather(a, b, centres);
   EdgeEnergy result;
   if (n < 4) return result;
   try {
@@ -236,7 +248,7 @@ class Collapser {
       placement_[i] = distance_placement(a, b, length);
       return state_.cost[i];
     }
-    const EdgeEnergy energy = edge_energy(mesh_, a, b, nullptr);
+    const EdgeEnergy energy = edge_energy(rings_, a, b, nullptr);
     shape_[i] = std::isfinite(energy.energy) && length > 0 ? (energy.energy / length) / scales_.energy_per_length : 0.0;
     return bending_cost(i, length);
   }
@@ -257,7 +269,7 @@ class Collapser {
       q += quadrics_[idx(b)];
       return evaluate(q, point(a)) <= evaluate(q, point(b)) ? point(a) : point(b);
     }
-    const EdgeEnergy energy = edge_energy(mesh_, a, b, &neighbourhood_);
+    const EdgeEnergy energy = edge_energy(rings_, a, b, &neighbourhood_);
     if (!std::isfinite(energy.energy)) return 0.5 * (point(a) + point(b));
     try {
       const Vec3 projected = project_to_local_surface(neighbourhood_, energy.point);
@@ -328,6 +340,7 @@ class Collapser {
   std::vector<double> shape_;         // Jhat, the dimensionless bending energy, as last computed
   OpenMesh::Utils::HeapT<int, EdgeHeapInterface> heap_{EdgeHeapInterface{&state_}};
   std::vector<Vec3> neighbourhood_;
+  RingUnion rings_{mesh_};
 };
 
 double median(std::vector<double> values) {
@@ -356,11 +369,12 @@ CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost) {
   // J / |e| on about 2000 evenly spread edges: enough for a stable median.
   const std::size_t stride = std::max<std::size_t>(1, mesh.n_edges() / 2000);
   std::vector<double> ratios;
+  RingUnion rings(mesh);
   for (std::size_t i = 0; i < mesh.n_edges(); i += stride) {
     const EdgeHandle e(static_cast<int>(i));
     const HalfedgeHandle h = mesh.halfedge_handle(e, 0);
     const double length = mesh.calc_edge_length(e);
-    const EdgeEnergy energy = edge_energy(mesh, mesh.from_vertex_handle(h), mesh.to_vertex_handle(h), nullptr);
+    const EdgeEnergy energy = edge_energy(rings, mesh.from_vertex_handle(h), mesh.to_vertex_handle(h), nullptr);
     if (std::isfinite(energy.energy) && length > 0) ratios.push_back(energy.energy / length);
   }
   const double typical = median(std::move(ratios));
