@@ -47,12 +47,13 @@ bool solve_two(Bordered& matrix, int size, double (*rhs)[2]) {
       for (int i = k + 1; i < size; ++i) matrix(i, j) -= matrix(i, k) * pivot_row;
     }
   }
-  for (int k = size - 1; k >= 0; --k) {
-    for (int c = 0; c < 2; ++c) {
-      double value = rhs[k][c];
-      for (int j = k + 1; j < size; ++j) value -= matrix(k, j) * rhs[j][c];
-      rhs[k][c] = value / matrix(k, k);
-      if (!std::isfinite(rhs[k][c])) return false;
+  for (int k = size - 1; k >= 0; --k) {  // back substitution, also column by column
+    rhs[k][0] /= matrix(k, k);
+    rhs[k][1] /= matrix(k, k);
+    if (!std::isfinite(rhs[k][0]) || !std::isfinite(rhs[k][1])) return false;
+    for (int i = 0; i < k; ++i) {
+      rhs[i][0] -= matrix(i, k) * rhs[k][0];
+      rhs[i][1] -= matrix(i, k) * rhs[k][1];
     }
   }
   return true;

@@ -164,13 +164,16 @@ class Collapser {
       }
       faces -= mesh_.is_boundary(e) ? 1 : 2;
       quadrics_[idx(kept)] = merged;
-      // The collapse deletes some of these edges and re-attaches the others to `kept`.
+      // The collapse deletes three of the edges around the two end points (the edge and one of
+      // each pair it merges): those leave the queue; the others are re-costed around `kept`.
+      touched_.clear();
       for (const VertexHandle end : {removed, kept})
-        for (const EdgeHandle around : mesh_.ve_range(end))
-          if (heap_.is_stored(around.idx())) heap_.remove(around.idx());
+        for (const EdgeHandle around : mesh_.ve_range(end)) touched_.push_back(around);
       mesh_.collapse(h);
       mesh_.set_point(kept, to_openmesh(p));
       ++result_.collapses;
+      for (const EdgeHandle around : touched_)
+        if (mesh_.status(around).deleted() && heap_.is_stored(around.idx())) heap_.remove(around.idx());
       for (const EdgeHandle around : mesh_.ve_range(kept)) push(around);
       if (params_.progress && result_.collapses % 1024 == 0)
         params_.progress(static_cast<double>(faces_before - faces) / static_cast<double>(to_remove));
@@ -340,6 +343,7 @@ class Collapser {
   std::vector<double> shape_;         // Jhat, the dimensionless bending energy, as last computed
   OpenMesh::Utils::HeapT<int, EdgeHeapInterface> heap_{EdgeHeapInterface{&state_}};
   std::vector<Vec3> neighbourhood_;
+  std::vector<EdgeHandle> touched_;
   RingUnion rings_{mesh_};
 };
 

@@ -73,8 +73,10 @@ void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyR
     const detail::PolishCounts polish = detail::polish_shape(mesh, quadrics, tolerance);
     result.polish_flips += polish.flips;
     result.polish_moves += polish.moves;
-    result.fit_moves += detail::fit_to_reference(mesh, reference, min_angle_cosine);
   }
+  // One fit at the end does what one after every sweep did (bunny00, 10 % and 30 %: the same
+  // RMS and Hausdorff distances to 3 digits) at a third of the closest-point queries.
+  result.fit_moves = detail::fit_to_reference(mesh, reference, min_angle_cosine);
 }
 
 }  // namespace
