@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Simplification side by side: our bending and distance costs and OpenMesh's quadric decimater
+# (--cost quadric, the baseline linked into the same binary), on bunny00 and fandisk at 30 % and
+# 10 %, then the scale run (bunny00 Loop-subdivided twice, 1.2 M faces, to 10 %). Figures are
+# meshprep's own quality report against the input (Hausdorff and RMS / bbox diagonal).
+# Needs ../shared/data. Usage: bench/bench_simplify.sh [build-dir]   (default: build)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+bin=$build/bin/meshprep
+data=$root/../shared/data/meshes
+[ -d "$data" ] || { echo "skipped: $data not found"; exit 0; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+row() {  # mesh-file ratio cost label
+  "$bin" simplify "$1" -o "$work/out.off" --ratio "$2" --cost "$3" --json "$work/r.json" > /dev/null
+  python3 - "$work/r.json" "$4" "$2" "$3" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1])); q = j["quality"]; r = q["reference"]; t = j["input_topology"]
+valid = q["closed"] == t["closed"] and q["manifold"] and q["genus"] == t["genus"] \
+    and q["self_intersections"] <= t["self_intersections"]
+print("| %s | %d %% | %s | %.2f | %d | %.3g | %.3g | %.1f %% | %.2f | %s |" % (
+    sys.argv[2], round(100 * float(sys.argv[3])), sys.argv[4], j["time_seconds"], j["faces_after"],
+    r["hausdorff_relative"], r["rms_relative"], 100 * q["faces_min_angle_below_20"], q["radius_ratio"]["p95"],
+    "yes" if valid and j["reached_target"] else "NO"))
+PY
+}
+
+echo "| mesh | kept | cost | time (s) | faces | Hausdorff | RMS | min angle < 20° | radius ratio p95 | valid |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+for m in bunny00 fandisk; do
+  for r in 0.3 0.1; do
+    for c in bending distance quadric; do row "$data/$m.off" "$r" "$c" "$m"; done
+  done
+done
+
+# Scale: time per removed face at 1.2 M faces against 75 k (same cost, same ratio).
+"$build/bin/subdivide_mesh" "$data/bunny00.off" "$work/bunny_x16.off" 2
+for c in bending quadric; do row "$work/bunny_x16.off" 0.1 "$c" "bunny00 x16 (1.2 M)"; done
