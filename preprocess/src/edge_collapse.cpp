@@ -31,6 +31,11 @@ constexpr double kRetryPenalty = 2.0;
 constexpr unsigned char kMaxRetries = 3;
 // A quadric minimiser farther than this many edge lengths from the midpoint is not trusted.
 constexpr double kFarPlacement = 2.0;
+// The passes schedule considers the cheapest tenth of the edges in each pass: bunny00 at 10 %
+// measured Hausdorff 1.33e-3 / 1.72e-3 / 1.82e-3 for 0.1 / 0.2 / 0.4, and all edges (the
+// independent set alone) 1.67e-3 with fandisk's Hausdorff at 1e-2: expensive edges collapsed in
+// the same pass as cheap ones.
+constexpr double kPassFraction = 0.1;
 // A face whose doubled area is below this fraction of its squared perimeter is degenerate.
 constexpr double kDegenerateArea = 1e-10;
 
@@ -123,11 +128,21 @@ class Collapser {
   }
 
   void run(std::size_t target) {
+    faces_before_ = faces_ = mesh_.n_faces();
+    to_remove_ = faces_ > target ? faces_ - target : 0;
+    if (params_.schedule == CollapseSchedule::Queue)
+      run_queue(target);
+    else
+      run_passes(target);
+  }
+
+ private:
+  enum class Outcome { Collapsed, Topology, Shape, Error };
+
+  // The greedy order: always the cheapest edge next.
+  void run_queue(std::size_t target) {
     for (const EdgeHandle e : mesh_.edges()) push(e);
-    const std::size_t faces_before = mesh_.n_faces();
-    std::size_t faces = faces_before;
-    const std::size_t to_remove = faces > target ? faces - target : 0;
-    while (faces > target && !heap_.empty()) {
+    while (faces_ > target && !heap_.empty()) {
       const int edge = heap_.front();
       const EdgeHandle e(edge);
       const std::size_t i = idx(e);
@@ -137,50 +152,102 @@ class Collapser {
         heap_.update(edge);
         if (heap_.front() != edge) continue;
       }
-      const HalfedgeHandle h = collapse_direction(e);
-      if (!h.is_valid()) {
-        ++result_.rejected_topology;
-        heap_.pop_front();  // back in the queue when its neighbourhood changes
-        continue;
+      switch (try_collapse(e)) {
+        case Outcome::Collapsed:
+          for (const EdgeHandle around : mesh_.ve_range(last_kept_)) push(around);
+          break;
+        case Outcome::Shape:
+          if (retries_[i]++ < kMaxRetries) {
+            state_.cost[i] = state_.cost[i] * kRetryPenalty + std::numeric_limits<double>::min();
+            heap_.update(edge);
+          } else {
+            heap_.pop_front();
+          }
+          break;
+        default:
+          heap_.pop_front();  // back in the queue when its neighbourhood changes
       }
-      const Vec3 p = placement_[i];
-      if (!shape_ok(h, p)) {
-        ++result_.rejected_shape;
-        if (retries_[i]++ < kMaxRetries) {
-          state_.cost[i] = state_.cost[i] * kRetryPenalty + std::numeric_limits<double>::min();
-          heap_.update(edge);
-        } else {
-          heap_.pop_front();
-        }
-        continue;
-      }
-      const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
-      Quadric merged = quadrics_[idx(kept)];
-      merged += quadrics_[idx(removed)];
-      if (params_.max_error > 0 && rms_plane_distance(merged, p) > params_.max_error * scales_.diagonal) {
-        ++result_.rejected_error;
-        heap_.pop_front();
-        continue;
-      }
-      faces -= mesh_.is_boundary(e) ? 1 : 2;
-      quadrics_[idx(kept)] = merged;
-      // The collapse deletes three of the edges around the two end points (the edge and one of
-      // each pair it merges): those leave the queue; the others are re-costed around `kept`.
-      touched_.clear();
-      for (const VertexHandle end : {removed, kept})
-        for (const EdgeHandle around : mesh_.ve_range(end)) touched_.push_back(around);
-      mesh_.collapse(h);
-      mesh_.set_point(kept, to_openmesh(p));
-      ++result_.collapses;
-      for (const EdgeHandle around : touched_)
-        if (mesh_.status(around).deleted() && heap_.is_stored(around.idx())) heap_.remove(around.idx());
-      for (const EdgeHandle around : mesh_.ve_range(kept)) push(around);
-      if (params_.progress && result_.collapses % 1024 == 0)
-        params_.progress(static_cast<double>(faces_before - faces) / static_cast<double>(to_remove));
     }
   }
 
- private:
+  // The paper's order: passes over the edges sorted by cost, collapsing an independent set of the
+  // cheapest kPassFraction in each (an edge is skipped if one of its end points is the kept
+  // vertex of a collapse of this pass or in its 1-ring, so no vertex is contracted twice and every
+  // cost used is current; all edges are tried when none of the cheapest passes the guards). Costs
+  // are recomputed between passes on the stars the collapses changed.
+  void run_passes(std::size_t target) {
+    std::vector<std::pair<double, int>> order;
+    std::vector<unsigned> moved(mesh_.n_vertices(), 0);
+    for (unsigned pass = 1; faces_ > target; ++pass) {
+      order.clear();
+      for (const EdgeHandle e : mesh_.edges()) {
+        if (mesh_.status(e).deleted()) continue;
+        const std::size_t i = idx(e);
+        if (!state_.complete[i]) {
+          if (!prepare(e)) continue;
+          state_.cost[i] = complete_cost(e);
+          state_.complete[i] = 1;
+        }
+        order.emplace_back(state_.cost[i], e.idx());
+      }
+      std::sort(order.begin(), order.end());
+      const std::size_t considered =
+          std::max<std::size_t>(1, static_cast<std::size_t>(kPassFraction * static_cast<double>(order.size())));
+      const std::size_t collapses_before = result_.collapses;
+      std::size_t rank = 0;
+      for (const auto& [cost, edge] : order) {
+        if (rank++ >= considered && result_.collapses > collapses_before) break;
+        if (faces_ <= target) break;
+        const EdgeHandle e(edge);
+        if (mesh_.status(e).deleted()) continue;
+        const HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
+        if (moved[idx(mesh_.from_vertex_handle(h))] == pass || moved[idx(mesh_.to_vertex_handle(h))] == pass) continue;
+        if (try_collapse(e) != Outcome::Collapsed) continue;
+        moved[idx(last_kept_)] = pass;
+        for (const VertexHandle w : mesh_.vv_range(last_kept_)) moved[idx(w)] = pass;
+        for (const EdgeHandle around : mesh_.ve_range(last_kept_)) state_.complete[idx(around)] = 0;
+      }
+      if (result_.collapses == collapses_before) break;  // nothing passes the guards any more
+    }
+  }
+
+  // The guards, then the collapse of edge e onto its placement (last_kept_ is the vertex that stays).
+  Outcome try_collapse(EdgeHandle e) {
+    const HalfedgeHandle h = collapse_direction(e);
+    if (!h.is_valid()) {
+      ++result_.rejected_topology;
+      return Outcome::Topology;
+    }
+    const Vec3 p = placement_[idx(e)];
+    if (!shape_ok(h, p)) {
+      ++result_.rejected_shape;
+      return Outcome::Shape;
+    }
+    const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
+    Quadric merged = quadrics_[idx(kept)];
+    merged += quadrics_[idx(removed)];
+    if (params_.max_error > 0 && rms_plane_distance(merged, p) > params_.max_error * scales_.diagonal) {
+      ++result_.rejected_error;
+      return Outcome::Error;
+    }
+    faces_ -= mesh_.is_boundary(e) ? 1 : 2;
+    quadrics_[idx(kept)] = merged;
+    // The collapse deletes three of the edges around the two end points (the edge and one of
+    // each pair it merges): those leave the queue; the others are re-costed around `kept`.
+    touched_.clear();
+    for (const VertexHandle end : {removed, kept})
+      for (const EdgeHandle around : mesh_.ve_range(end)) touched_.push_back(around);
+    mesh_.collapse(h);
+    mesh_.set_point(kept, to_openmesh(p));
+    ++result_.collapses;
+    for (const EdgeHandle around : touched_)
+      if (mesh_.status(around).deleted() && heap_.is_stored(around.idx())) heap_.remove(around.idx());
+    last_kept_ = kept;
+    if (params_.progress && result_.collapses % 1024 == 0)
+      params_.progress(static_cast<double>(faces_before_ - faces_) / static_cast<double>(to_remove_));
+    return Outcome::Collapsed;
+  }
+
   template <class Handle>
   static std::size_t idx(Handle h) {
     return static_cast<std::size_t>(h.idx());
@@ -200,17 +267,22 @@ class Collapser {
   // back into the queue if it is no longer the cheapest: J is only computed for edges near the
   // front, which halves the evaluations.
   void push(EdgeHandle e) {
+    if (prepare(e)) enqueue(e, state_.cost[idx(e)]);
+  }
+
+  // The placement and the cost estimate of edge e (in state_.cost); false if it may never collapse.
+  bool prepare(EdgeHandle e) {
     const std::size_t i = idx(e);
     retries_[i] = 0;
     state_.complete[i] = 0;
     const HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
     const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
-    if (locked_[idx(a)] || locked_[idx(b)]) return;
+    if (locked_[idx(a)] || locked_[idx(b)]) return false;
     const Vec3 pa = point(a), pb = point(b);
     const double length = (pb - pa).norm();
     if (params_.cost == CollapseCost::Distance) {
-      enqueue(e, length / scales_.edge_length);
-      return;
+      state_.cost[i] = length / scales_.edge_length;
+      return true;
     }
     Quadric q = quadrics_[idx(a)];
     q += quadrics_[idx(b)];
@@ -229,7 +301,8 @@ class Collapser {
     }
     placement_[i] = p;
     quadric_cost_[i] = evaluate(q, p) / (scales_.edge_length * scales_.edge_length);
-    enqueue(e, bending_cost(i, length));
+    state_.cost[i] = bending_cost(i, length);
+    return true;
   }
 
   void enqueue(EdgeHandle e, double cost) {
@@ -344,6 +417,8 @@ class Collapser {
   OpenMesh::Utils::HeapT<int, EdgeHeapInterface> heap_{EdgeHeapInterface{&state_}};
   std::vector<Vec3> neighbourhood_;
   std::vector<EdgeHandle> touched_;
+  VertexHandle last_kept_;
+  std::size_t faces_before_ = 0, faces_ = 0, to_remove_ = 0;
   RingUnion rings_{mesh_};
 };
 
