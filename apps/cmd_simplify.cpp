@@ -1,5 +1,5 @@
 // meshprep simplify IN -o OUT (--ratio R | --faces N) [--cost bending|distance|quadric]
-//   [--schedule queue|passes] [--max-error E] [--min-angle DEG] [--no-polish] [--json FILE|-]
+//   [--max-error E] [--min-angle DEG] [--no-polish] [--json FILE|-]
 #include "cli_common.h"
 #include "progress_bar.h"
 
@@ -22,7 +22,7 @@ const std::map<std::string, CollapseCost> kCosts = {
     {"bending", CollapseCost::Bending}, {"distance", CollapseCost::Distance}, {"quadric", CollapseCost::Quadric}};
 
 struct SimplifyOptions {
-  std::string input, output, json, cost = "bending", schedule = "queue";
+  std::string input, output, json, cost = "bending";
   double ratio = 0, max_error = 0, min_angle = 20;
   std::size_t faces = 0;
   bool no_polish = false;
@@ -55,7 +55,6 @@ int run_simplify(const SimplifyOptions& o) {
   params.keep_ratio = o.ratio > 0 ? o.ratio : 1.0;
   params.target_faces = o.faces;
   params.cost = kCosts.at(o.cost);
-  params.schedule = o.schedule == "passes" ? CollapseSchedule::Passes : CollapseSchedule::Queue;
   params.max_error = o.max_error;
   params.min_angle_deg = o.min_angle;
   params.polish = !o.no_polish;
@@ -74,7 +73,6 @@ int run_simplify(const SimplifyOptions& o) {
   json["input"] = o.input;
   json["output"] = o.output;
   json["cost"] = o.cost;
-  json["schedule"] = o.cost == "quadric" ? "queue" : o.schedule;
   json["min_angle_deg"] = o.min_angle;
   json["max_error"] = o.max_error;
   json["faces_before"] = result.faces_before;
@@ -117,11 +115,6 @@ Action add_simplify_command(CLI::App& app) {
                   "memory), distance (the paper's simple cost: shortest edge first, placed on the local RBF "
                   "surface) or quadric (OpenMesh's quadric decimater, the baseline, no shape guard)")
       ->check(CLI::IsMember({"bending", "distance", "quadric"}))
-      ->capture_default_str();
-  cmd->add_option("--schedule", o->schedule,
-                  "Order of the collapses: queue (always the cheapest next) or passes (the paper's: "
-                  "independent sets of the cheapest edges, pass after pass); --cost quadric always queues")
-      ->check(CLI::IsMember({"queue", "passes"}))
       ->capture_default_str();
   cmd->add_option("--max-error", o->max_error,
                   "Refuse collapses whose estimated deviation exceeds this fraction of the bounding-box diagonal "

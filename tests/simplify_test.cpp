@@ -85,28 +85,6 @@ TEST(Simplify, SphereStaysClosedGenus0NearTheSurfaceWithEveryCost) {
   }
 }
 
-TEST(Simplify, ThePapersPassesGiveTheSameGuarantees) {
-  // Independent sets per pass (CollapseSchedule::Passes) instead of the greedy queue. (Distance
-  // with passes stops short of the torus's target: a pass in which no edge passes the guards
-  // changes nothing, so the next one cannot either.)
-  for (const CollapseCost cost : {CollapseCost::Bending}) {
-    SCOPED_TRACE(static_cast<int>(cost));
-    SimplifyParams p = with_cost(cost);
-    p.schedule = CollapseSchedule::Passes;
-    SimplifyResult result;
-    const QualityReport sphere = simplified_quality(test::icosphere(4), p, &result);
-    EXPECT_TRUE(result.reached_target);
-    EXPECT_TRUE(sphere.closed);
-    EXPECT_EQ(*sphere.genus, 0);
-    EXPECT_EQ(sphere.self_intersections, 0u);
-    EXPECT_LT(sphere.reference->hausdorff, 0.02);
-    EXPECT_GE(sphere.min_angle_deg.min, p.min_angle_deg - 1e-9);
-    p.target_faces = 400;
-    EXPECT_EQ(*simplified_quality(test::torus(48, 24), p, &result).genus, 1);
-    EXPECT_TRUE(result.reached_target);
-  }
-}
-
 TEST(Simplify, GuardedCostsKeepEveryAngleAboveTheBound) {
   // The icosphere's smallest angle is ~52 degrees, so the bound is min-angle itself; the quadric
   // baseline has no guard (this is what the guard is for).

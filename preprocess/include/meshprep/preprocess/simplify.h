@@ -34,17 +34,10 @@ enum class CollapseCost {
   Quadric,   ///< OpenMesh Decimater + ModQuadric + ModNormalFlipping (baseline)
 };
 
-/// The order of the collapses (Bending and Distance).
-enum class CollapseSchedule {
-  Queue,   ///< greedy: always the cheapest edge that passes the guards next
-  Passes,  ///< the paper's: passes over the sorted edges, an independent set collapsed in each
-};
-
 struct SimplifyParams {
   double keep_ratio = 0.1;        ///< fraction of the faces kept, (0, 1]; ignored if target_faces > 0
   std::size_t target_faces = 0;   ///< absolute target; 0 = use keep_ratio
   CollapseCost cost = CollapseCost::Bending;
-  CollapseSchedule schedule = CollapseSchedule::Queue;
   /// Smallest angle (degrees) a collapse may create, unless the faces around the edge already
   /// had a smaller one (then that is the bound). 0 disables the guard.
   double min_angle_deg = 20;
