@@ -63,12 +63,23 @@ int run_simplify(const SimplifyOptions& o) {
   const SimplifyResult result = simplify(loaded.mesh, params);
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
-  write_soup(output, o.output);
 
   QualityParams quality_params;
   QualityReport quality = analyze_quality(output, quality_params, &loaded.soup);
   quality.path = o.output;
   quality.reference->path = o.input;
+  const nlohmann::ordered_json input_topology = input_facts(loaded.soup);
+  // The guards have kept every output measured free of new self-intersections, but they do not
+  // test for them: the report does, and a surface that intersects itself is not written.
+  const std::size_t input_intersections = input_topology["self_intersections"].get<std::size_t>();
+  if (quality.self_intersections > input_intersections)
+    throw WorkFailed(o.input + ": the simplified surface intersects itself at " +
+                     std::to_string(quality.self_intersections - input_intersections) +
+                     " more face pairs than the input (first: faces " +
+                     std::to_string(quality.self_intersecting_pairs.front().first) + " and " +
+                     std::to_string(quality.self_intersecting_pairs.front().second) +
+                     "); nothing written. Keep more faces (--ratio) or raise --min-angle");
+  write_soup(output, o.output);
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
@@ -85,8 +96,9 @@ int run_simplify(const SimplifyOptions& o) {
                       {"shape", result.rejected_shape},
                       {"max_error", result.rejected_error}};
   json["energy_evaluations"] = result.energy_evaluations;
+  json["intersection_retries"] = result.intersection_retries;
   json["polish"] = {{"flips", result.polish_flips}, {"moves", result.polish_moves}, {"fit_moves", result.fit_moves}};
-  json["input_topology"] = input_facts(loaded.soup);
+  json["input_topology"] = input_topology;
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-")
@@ -96,7 +108,9 @@ int run_simplify(const SimplifyOptions& o) {
               << " % of faces, radius ratio p95 " << quality.radius_ratio.p95 << '\n';
   if (!result.reached_target)
     std::cerr << "meshprep: warning: stopped at " << result.faces_after << " faces, target " << result.target_faces
-              << " (no further collapse passes the guards" << (o.max_error > 0 ? " and --max-error" : "") << ")\n";
+              << " (no further collapse passes the guards" << (o.max_error > 0 ? " and --max-error" : "")
+              << (result.intersection_retries > 0 ? "; parts were frozen where the surface would intersect itself" : "")
+              << ")\n";
   return kSuccess;
 }
 

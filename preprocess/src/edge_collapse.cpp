@@ -108,12 +108,12 @@ EdgeEnergy edge_energy(RingUnion& rings, VertexHandle a, VertexHandle b, std::ve
 class Collapser {
  public:
   Collapser(TriMesh& mesh, const SimplifyParams& params, const CollapseScales& scales, std::vector<Quadric>& quadrics,
-            SimplifyResult& result)
+            const std::vector<char>& frozen, SimplifyResult& result)
       : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), result_(result),
         retries_(mesh.n_edges(), 0), placement_(mesh.n_edges(), Vec3::Zero()),
         locked_(mesh.n_vertices(), 0),
         min_angle_cosine_(params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 2.0) {
-    for (const VertexHandle v : mesh_.vertices()) locked_[idx(v)] = !mesh_.is_manifold(v);
+    for (const VertexHandle v : mesh_.vertices()) locked_[idx(v)] = frozen[idx(v)] || !mesh_.is_manifold(v);
     state_.cost.assign(mesh.n_edges(), 0.0);
     state_.heap_position.assign(mesh.n_edges(), -1);
     state_.complete.assign(mesh.n_edges(), 0);
@@ -361,7 +361,7 @@ class Collapser {
   SimplifyResult& result_;
   std::vector<unsigned char> retries_;
   std::vector<Vec3> placement_;
-  std::vector<char> locked_;  // non-manifold vertices: never moved
+  std::vector<char> locked_;  // frozen and non-manifold vertices: never moved
   double min_angle_cosine_;
   EdgeQueueState state_;
   std::vector<double> quadric_cost_;  // Q(p) / L^2 at the edge's placement
@@ -414,8 +414,8 @@ CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost) {
 }
 
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
-                    std::vector<Quadric>& quadrics, SimplifyResult& result) {
-  Collapser(mesh, params, scales, quadrics, result).run(target);
+                    std::vector<Quadric>& quadrics, const std::vector<char>& frozen, SimplifyResult& result) {
+  Collapser(mesh, params, scales, quadrics, frozen, result).run(target);
 }
 
 }  // namespace meshprep::detail

@@ -21,9 +21,10 @@ struct CollapseScales {
 CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost);
 
 /// Collapse edges until `target` faces remain or no edge may go. `quadrics` (vertex_quadrics)
-/// are accumulated into the kept vertices. The mesh is not garbage-collected. Fills the counters
-/// of `result` (collapses, rejections, energy evaluations).
+/// are accumulated into the kept vertices. Vertices with `frozen[v] != 0` (and non-manifold ones)
+/// never move. The mesh is not garbage-collected. Fills the counters of `result` (collapses,
+/// rejections, energy evaluations).
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
-                    std::vector<Quadric>& quadrics, SimplifyResult& result);
+                    std::vector<Quadric>& quadrics, const std::vector<char>& frozen, SimplifyResult& result);
 
 }  // namespace meshprep::detail
