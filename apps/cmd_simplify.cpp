@@ -109,7 +109,7 @@ int run_simplify(const SimplifyOptions& o) {
   if (!result.reached_target)
     std::cerr << "meshprep: warning: stopped at " << result.faces_after << " faces, target " << result.target_faces
               << " (no further collapse passes the guards" << (o.max_error > 0 ? " and --max-error" : "")
-              << (result.intersection_retries > 0 ? "; parts were frozen where the surface would intersect itself" : "")
+              << (result.intersection_retries > 0 ? "; the error was bounded where the surface would intersect itself" : "")
               << ")\n";
   return kSuccess;
 }

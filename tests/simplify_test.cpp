@@ -192,7 +192,7 @@ TEST(Simplify, OpenDiskKeepsItsBoundaryLoop) {
 
 TEST(Simplify, AThinPlateIsNeverSimplifiedIntoItself) {
   // 0.002 apart, edges of 0.075: at 10 % the chords of one sheet would cross the other (the first
-  // attempt gives ~900 intersecting pairs). The output is checked and the crossing regions frozen.
+  // attempt gives ~900 intersecting pairs). The output is checked and the error bounded where it crosses.
   const TriangleSoup plate = thin_wavy_plate(40, 0.002);
   ASSERT_EQ(analyze_quality(plate).self_intersections, 0u);
   SimplifyParams p;

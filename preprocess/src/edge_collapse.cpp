@@ -108,12 +108,13 @@ EdgeEnergy edge_energy(RingUnion& rings, VertexHandle a, VertexHandle b, std::ve
 class Collapser {
  public:
   Collapser(TriMesh& mesh, const SimplifyParams& params, const CollapseScales& scales, std::vector<Quadric>& quadrics,
-            const std::vector<char>& frozen, SimplifyResult& result)
-      : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), result_(result),
+            const std::vector<double>& error_cap, std::vector<int>& merged_into, SimplifyResult& result)
+      : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), error_cap_(error_cap),
+        merged_into_(merged_into), result_(result),
         retries_(mesh.n_edges(), 0), placement_(mesh.n_edges(), Vec3::Zero()),
         locked_(mesh.n_vertices(), 0),
         min_angle_cosine_(params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 2.0) {
-    for (const VertexHandle v : mesh_.vertices()) locked_[idx(v)] = frozen[idx(v)] || !mesh_.is_manifold(v);
+    for (const VertexHandle v : mesh_.vertices()) locked_[idx(v)] = !mesh_.is_manifold(v);
     state_.cost.assign(mesh.n_edges(), 0.0);
     state_.heap_position.assign(mesh.n_edges(), -1);
     state_.complete.assign(mesh.n_edges(), 0);
@@ -178,7 +179,9 @@ class Collapser {
     const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
     Quadric merged = quadrics_[idx(kept)];
     merged += quadrics_[idx(removed)];
-    if (params_.max_error > 0 && rms_plane_distance(merged, p) > params_.max_error * scales_.diagonal) {
+    double limit = std::min(error_cap_[idx(kept)], error_cap_[idx(removed)]);
+    if (params_.max_error > 0) limit = std::min(limit, params_.max_error * scales_.diagonal);
+    if (rms_plane_distance(merged, p) > limit) {
       ++result_.rejected_error;
       return Outcome::Error;
     }
@@ -191,6 +194,7 @@ class Collapser {
       for (const EdgeHandle around : mesh_.ve_range(end)) touched_.push_back(around);
     mesh_.collapse(h);
     mesh_.set_point(kept, to_openmesh(p));
+    merged_into_[idx(removed)] = kept.idx();
     ++result_.collapses;
     for (const EdgeHandle around : touched_)
       if (mesh_.status(around).deleted() && heap_.is_stored(around.idx())) heap_.remove(around.idx());
@@ -358,10 +362,12 @@ class Collapser {
   const SimplifyParams& params_;
   const CollapseScales& scales_;
   std::vector<Quadric>& quadrics_;
+  const std::vector<double>& error_cap_;
+  std::vector<int>& merged_into_;
   SimplifyResult& result_;
   std::vector<unsigned char> retries_;
   std::vector<Vec3> placement_;
-  std::vector<char> locked_;  // frozen and non-manifold vertices: never moved
+  std::vector<char> locked_;  // non-manifold vertices: never moved
   double min_angle_cosine_;
   EdgeQueueState state_;
   std::vector<double> quadric_cost_;  // Q(p) / L^2 at the edge's placement
@@ -414,8 +420,9 @@ CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost) {
 }
 
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
-                    std::vector<Quadric>& quadrics, const std::vector<char>& frozen, SimplifyResult& result) {
-  Collapser(mesh, params, scales, quadrics, frozen, result).run(target);
+                    std::vector<Quadric>& quadrics, const std::vector<double>& error_cap,
+                    std::vector<int>& merged_into, SimplifyResult& result) {
+  Collapser(mesh, params, scales, quadrics, error_cap, merged_into, result).run(target);
 }
 
 }  // namespace meshprep::detail

@@ -21,10 +21,13 @@ struct CollapseScales {
 CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost);
 
 /// Collapse edges until `target` faces remain or no edge may go. `quadrics` (vertex_quadrics)
-/// are accumulated into the kept vertices. Vertices with `frozen[v] != 0` (and non-manifold ones)
-/// never move. The mesh is not garbage-collected. Fills the counters of `result` (collapses,
-/// rejections, energy evaluations).
+/// are accumulated into the kept vertices. A collapse that merges vertex v may not take the
+/// quadric's RMS plane distance above `error_cap[v]` (nor above params.max_error); non-manifold
+/// vertices never move. `merged_into[v]` is set to the vertex v was collapsed into (entries of
+/// vertices that stay are left alone). The mesh is not garbage-collected. Fills the counters of
+/// `result` (collapses, rejections, energy evaluations).
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
-                    std::vector<Quadric>& quadrics, const std::vector<char>& frozen, SimplifyResult& result);
+                    std::vector<Quadric>& quadrics, const std::vector<double>& error_cap,
+                    std::vector<int>& merged_into, SimplifyResult& result);
 
 }  // namespace meshprep::detail

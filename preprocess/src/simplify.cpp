@@ -16,6 +16,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
 
 namespace meshprep {
 namespace {
@@ -28,8 +31,8 @@ namespace {
 // 2.0 and above cost the Hausdorff distance (tangential moves empty the ear tips).
 constexpr double kPolishTolerance = 1.3;
 constexpr int kPolishSweeps = 3;
-// Restarts with more of the input frozen when the output intersects itself (decimate_with_guards).
-constexpr int kFreezeAttempts = 4;
+// Restarts with a tighter error cap where the output intersects itself (decimate_with_guards).
+constexpr int kRetries = 6;
 
 std::size_t target_of(const TriMesh& mesh, const SimplifyParams& params) {
   if (params.target_faces > 0) return params.target_faces;
@@ -64,73 +67,83 @@ double typical_error(const TriMesh& mesh, const std::vector<detail::Quadric>& qu
   return count ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
 }
 
-// One simplification of `mesh` with the vertices in `frozen` kept in place.
-void decimate_once(TriMesh& mesh, const SimplifyParams& params, const TriangleSoup& original,
-                   const std::vector<char>& frozen, SimplifyResult& result) {
+// One simplification of `mesh` (not garbage-collected) under the per-vertex error caps; returns
+// the vertex quadrics; error_cap and merged_into as collapse_edges.
+std::vector<detail::Quadric> decimate_once(TriMesh& mesh, const SimplifyParams& params, const TriangleSoup& original,
+                                           const std::vector<double>& error_cap, std::vector<int>& merged_into,
+                                           SimplifyResult& result) {
   const detail::CollapseScales scales = detail::measure_scales(mesh, params.cost);
   std::vector<detail::Quadric> quadrics = detail::vertex_quadrics(mesh, scales.edge_length);
-  detail::collapse_edges(mesh, result.target_faces, params, scales, quadrics, frozen, result);
-  if (params.polish) {
-    const TriangleBvh reference(original);
-    const double tolerance = kPolishTolerance * typical_error(mesh, quadrics);
-    const double min_angle_cosine =
-        params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 1.0;
-    for (int sweep = 0; sweep < kPolishSweeps; ++sweep) {
-      const detail::PolishCounts polish = detail::polish_shape(mesh, quadrics, tolerance);
-      result.polish_flips += polish.flips;
-      result.polish_moves += polish.moves;
-    }
-    // One fit at the end does what one after every sweep did (bunny00, 10 % and 30 %: the same
-    // RMS and Hausdorff distances to 3 digits) at a third of the closest-point queries.
-    result.fit_moves = detail::fit_to_reference(mesh, reference, min_angle_cosine);
+  detail::collapse_edges(mesh, result.target_faces, params, scales, quadrics, error_cap, merged_into, result);
+  if (!params.polish) return quadrics;
+  const TriangleBvh reference(original);
+  const double tolerance = kPolishTolerance * typical_error(mesh, quadrics);
+  const double min_angle_cosine = params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 1.0;
+  for (int sweep = 0; sweep < kPolishSweeps; ++sweep) {
+    const detail::PolishCounts polish = detail::polish_shape(mesh, quadrics, tolerance);
+    result.polish_flips += polish.flips;
+    result.polish_moves += polish.moves;
   }
-  mesh.garbage_collection();
+  // One fit at the end does what one after every sweep did (bunny00, 10 % and 30 %: the same
+  // RMS and Hausdorff distances to 3 digits) at a third of the closest-point queries.
+  result.fit_moves = detail::fit_to_reference(mesh, reference, min_angle_cosine);
+  return quadrics;
 }
 
-// Freeze the input vertices near the faces of `output` that intersect: inside the faces' bounding
-// boxes grown by `reach` times their longest edge.
-void freeze_near(const TriangleSoup& output, const SelfIntersections& crossings, double reach,
-                 const TriangleSoup& original, std::vector<char>& frozen) {
-  std::vector<Box3> boxes;
-  for (const auto& [f, g] : crossings.pairs) {
-    for (const std::size_t face : {f, g}) {
-      Box3 box;
-      box.setEmpty();
-      double longest = 0;
-      for (int k = 0; k < 3; ++k) {
-        const Vec3& p = output.points[output.triangles[face][static_cast<std::size_t>(k)]];
-        const Vec3& q = output.points[output.triangles[face][static_cast<std::size_t>((k + 1) % 3)]];
-        box.extend(p);
-        longest = std::max(longest, (q - p).norm());
-      }
-      const Vec3 grow = Vec3::Constant(reach * longest);
-      boxes.emplace_back(box.min() - grow, box.max() + grow);
-    }
+// The surviving vertex an input vertex was collapsed into (following the chain of merges).
+int survivor(std::vector<int>& merged_into, int v) {
+  int root = v;
+  while (merged_into[static_cast<std::size_t>(root)] != root) root = merged_into[static_cast<std::size_t>(root)];
+  while (merged_into[static_cast<std::size_t>(v)] != root) v = std::exchange(merged_into[static_cast<std::size_t>(v)], root);
+  return root;
+}
+
+// Halve the error allowed around the crossings: every input vertex merged into a corner of a
+// crossing face (or, grow > 0, into a vertex up to `grow` rings from one) may now only be
+// collapsed to half the error its survivor reached.
+void tighten_around_crossings(const TriMesh& simplified, const std::vector<detail::Quadric>& quadrics,
+                              const SelfIntersections& crossings, int grow, std::vector<int>& merged_into,
+                              std::vector<double>& error_cap) {
+  std::vector<int> soup_to_mesh;  // soup_from_mesh numbers the surviving vertices in order
+  for (const auto v : simplified.all_vertices())
+    if (!simplified.status(v).deleted()) soup_to_mesh.push_back(v.idx());
+  const TriangleSoup output = soup_from_mesh(simplified);
+  std::vector<char> hot(simplified.n_vertices(), 0);
+  for (const auto& [f, g] : crossings.pairs)
+    for (const std::size_t face : {f, g})
+      for (const std::uint32_t corner : output.triangles[face]) hot[static_cast<std::size_t>(soup_to_mesh[corner])] = 1;
+  for (int ring = 0; ring < grow; ++ring) {
+    std::vector<char> next = hot;
+    for (const auto v : simplified.vertices())
+      if (hot[static_cast<std::size_t>(v.idx())])
+        for (const auto w : simplified.vv_range(v)) next[static_cast<std::size_t>(w.idx())] = 1;
+    hot.swap(next);
   }
-  for (std::size_t v = 0; v < original.points.size(); ++v)
-    for (const Box3& box : boxes)
-      if (box.contains(original.points[v])) {
-        frozen[v] = 1;
-        break;
-      }
+  for (std::size_t v = 0; v < error_cap.size(); ++v) {
+    const auto s = static_cast<std::size_t>(survivor(merged_into, static_cast<int>(v)));
+    if (!hot[s]) continue;
+    const double reached = detail::rms_plane_distance(quadrics[s], to_eigen(simplified.point(TriMesh::VertexHandle(static_cast<int>(s)))));
+    error_cap[v] = std::min(error_cap[v], 0.5 * reached);
+  }
 }
 
 // The guards do not test for self-intersections (a dynamic BVH per collapse would cost more
 // than the collapse): the output is checked instead, and where it intersects itself while the
-// input did not, the simplification starts again with the input's vertices there frozen, a
-// wider region each time. Two close sheets (a thin plate) stop the collapses where their chords
-// would cross instead of crossing.
+// input did not, the simplification starts again from the input with half the error allowed
+// where the crossing faces came from (one more ring of them each time). Two close sheets then
+// simplify until their error fits between them.
 void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyResult& result) {
   const TriMesh input = mesh;
   const TriangleSoup original = soup_from_mesh(mesh);
-  std::vector<char> frozen(mesh.n_vertices(), 0);
+  std::vector<double> error_cap(mesh.n_vertices(), std::numeric_limits<double>::infinity());
   for (int attempt = 0;; ++attempt) {
-    decimate_once(mesh, params, original, frozen, result);
-    const TriangleSoup output = soup_from_mesh(mesh);
-    const SelfIntersections crossings = find_self_intersections(output);
-    if (crossings.count == 0 || attempt == kFreezeAttempts) return;
+    std::vector<int> merged_into(mesh.n_vertices());
+    std::iota(merged_into.begin(), merged_into.end(), 0);
+    const std::vector<detail::Quadric> quadrics = decimate_once(mesh, params, original, error_cap, merged_into, result);
+    const SelfIntersections crossings = find_self_intersections(soup_from_mesh(mesh));
+    if (crossings.count == 0 || attempt == kRetries) return;
     if (attempt == 0 && find_self_intersections(original, 1).count > 0) return;  // not ours to fix
-    freeze_near(output, crossings, std::ldexp(1.0, attempt), original, frozen);
+    tighten_around_crossings(mesh, quadrics, crossings, attempt, merged_into, error_cap);
     mesh = input;
     const SimplifyResult counters = result;
     result = SimplifyResult{};

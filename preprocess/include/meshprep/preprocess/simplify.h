@@ -21,8 +21,8 @@
 /// non-manifold vertices are never moved; a collapse whose new faces have a smallest angle below
 /// min(min_angle_deg, the old smallest angle around the edge) is refused. Self-intersections are
 /// checked on the output: where the output intersects itself and the input did not, the
-/// simplification restarts with the input's vertices there frozen (up to 4 times, a wider region
-/// each time), so the target may then not be reached.
+/// simplification restarts with half the error allowed where the crossing faces came from (up to
+/// 6 times, one more ring each time), so the target may then not be reached.
 
 #include "meshprep/core/mesh.h"
 
@@ -68,7 +68,7 @@ struct SimplifyResult {
   std::size_t energy_evaluations = 0; ///< bending energies computed
   std::size_t polish_flips = 0, polish_moves = 0;  ///< shape polish: edge flips, relaxation moves
   std::size_t fit_moves = 0;                        ///< least-squares fit to the original: vertex moves
-  std::size_t intersection_retries = 0;  ///< restarts with vertices frozen where the output intersected itself
+  std::size_t intersection_retries = 0;  ///< restarts with a tighter error cap where the output crossed itself
 };
 
 /// Simplify `mesh` in place (garbage-collected on return).
