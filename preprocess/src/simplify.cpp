@@ -3,6 +3,7 @@
 #include "collapse_quadrics.h"
 #include "edge_collapse.h"
 #include "shape_polish.h"
+#include "spatial_order.h"
 #include "surface_fit.h"
 
 #include "meshprep/core/errors.h"
@@ -33,6 +34,16 @@ constexpr double kPolishTolerance = 1.3;
 constexpr int kPolishSweeps = 3;
 // Restarts with a tighter error cap where the output intersects itself (decimate_with_guards).
 constexpr int kRetries = 6;
+
+// Status flags for collapses and face normals for OpenMesh's decimater.
+void request_collapse_attributes(TriMesh& mesh) {
+  mesh.request_vertex_status();
+  mesh.request_edge_status();
+  mesh.request_face_status();
+  mesh.request_halfedge_status();
+  mesh.request_face_normals();
+  mesh.update_face_normals();
+}
 
 std::size_t target_of(const TriMesh& mesh, const SimplifyParams& params) {
   if (params.target_faces > 0) return params.target_faces;
@@ -133,8 +144,10 @@ void tighten_around_crossings(const TriMesh& simplified, const std::vector<detai
 // where the crossing faces came from (one more ring of them each time). Two close sheets then
 // simplify until their error fits between them.
 void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyResult& result) {
+  const TriangleSoup original = detail::in_spatial_order(soup_from_mesh(mesh));
+  mesh = mesh_from_soup(original);
+  request_collapse_attributes(mesh);
   const TriMesh input = mesh;
-  const TriangleSoup original = soup_from_mesh(mesh);
   std::vector<double> error_cap(mesh.n_vertices(), std::numeric_limits<double>::infinity());
   for (int attempt = 0;; ++attempt) {
     std::vector<int> merged_into(mesh.n_vertices());
@@ -163,12 +176,7 @@ SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
   SimplifyResult result;
   result.faces_before = mesh.n_faces();
   result.target_faces = target_of(mesh, params);
-  mesh.request_vertex_status();
-  mesh.request_edge_status();
-  mesh.request_face_status();
-  mesh.request_halfedge_status();
-  mesh.request_face_normals();
-  mesh.update_face_normals();
+  request_collapse_attributes(mesh);
   const auto start = std::chrono::steady_clock::now();
   if (result.target_faces < result.faces_before) {
     if (params.cost == CollapseCost::Quadric)
