@@ -119,7 +119,7 @@ int run_simplify(const SimplifyOptions& o) {
 Action add_simplify_command(CLI::App& app) {
   auto o = std::make_shared<SimplifyOptions>();
   CLI::App* cmd = app.add_subcommand("simplify", "Reduce a surface mesh to a target size by edge collapse");
-  cmd->add_option("input", o->input, "Surface mesh (edge-manifold)")->required();
+  cmd->add_option("input", o->input, "Surface mesh (manifold; closed or with boundaries)")->required();
   cmd->add_option("-o,--output", o->output, "Simplified surface (.off .obj .ply .stl)")->required();
   auto* ratio = cmd->add_option("--ratio", o->ratio, "Fraction of the faces kept, in (0, 1]")
                     ->check(CLI::Range(1e-9, 1.0));
@@ -140,7 +140,7 @@ Action add_simplify_command(CLI::App& app) {
                   "edge already had a smaller one; 0 disables")
       ->check(CLI::Range(0.0, 59.0))
       ->capture_default_str();
-  cmd->add_flag("--no-polish", o->no_polish, "Skip the flips and relaxation that improve angles after collapsing");
+  cmd->add_flag("--no-polish", o->no_polish, "Skip the flips and relaxation that improve the angles, and the fit to the original, after collapsing");
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_simplify(*o); };
 }
