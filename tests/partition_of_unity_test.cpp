@@ -1,0 +1,152 @@
+#include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+#include "meshprep/preprocess/partition_of_unity.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <vector>
+
+using namespace meshprep;
+
+namespace {
+
+// Deterministic scattered (x, y) in [-1, 1]^2 (a low-discrepancy sequence, no two equal).
+std::vector<Eigen::Vector2d> scattered(int count) {
+  std::vector<Eigen::Vector2d> sites;
+  for (int i = 0; i < count; ++i)
+    sites.emplace_back(2 * std::fmod(0.5 + i * 0.7548776662466927, 1.0) - 1, 2 * std::fmod(0.5 + i * 0.5698402909980532, 1.0) - 1);
+  return sites;
+}
+
+template <class Height>
+std::vector<Vec3> sample(int count, Height height, const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity()) {
+  std::vector<Vec3> points;
+  for (const Eigen::Vector2d& s : scattered(count)) points.push_back(rotation * Vec3(s.x(), s.y(), height(s.x(), s.y())));
+  return points;
+}
+
+const Eigen::Matrix3d& tilt() {
+  static const Eigen::Matrix3d r = Eigen::AngleAxisd(0.9, Vec3(1, -2, 0.5).normalized()).toRotationMatrix();
+  return r;
+}
+
+// The distance from the reconstructed surface point above (x, y) of the frame to the true
+// surface, measured along the true surface's up direction `up` (the heights are single-valued).
+template <class Height>
+double worst_error(const PartitionOfUnity& pu, Height height, const Eigen::Matrix3d& rotation) {
+  double worst = 0;
+  const Eigen::AlignedBox2d box = pu.footprint();
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const Eigen::Vector2d q = box.min() + box.sizes().cwiseProduct(Eigen::Vector2d(i / 40.0, j / 40.0));
+      const Vec3 p = rotation.transpose() * pu.surface_point(q.x(), q.y());
+      if (std::abs(p.x()) > 0.9 || std::abs(p.y()) > 0.9) continue;  // inside the sampled square
+      worst = std::max(worst, std::abs(p.z() - height(p.x(), p.y())));
+    }
+  return worst;
+}
+
+}  // namespace
+
+TEST(PartitionOfUnity, WendlandWeight) {
+  EXPECT_EQ(wendland_weight(0), 1.0);
+  EXPECT_EQ(wendland_weight(1), 0.0);
+  EXPECT_EQ(wendland_weight(2), 0.0);
+  EXPECT_NEAR(wendland_weight(0.5), std::pow(0.5, 4) * 3, 1e-15);
+}
+
+TEST(PartitionOfUnity, ReproducesATiltedPlaneToRoundOff) {
+  auto plane = [](double x, double y) { return 0.3 * x - 0.2 * y + 0.1; };
+  const PartitionOfUnity pu(sample(400, plane, tilt()));
+  EXPECT_GT(pu.patches(), 20u);
+  EXPECT_LT(worst_error(pu, plane, tilt()), 1e-12);
+}
+
+TEST(PartitionOfUnity, QuadraticPatchesReproduceAQuadric) {
+  // Even in x and y over a sample symmetric in x and in y: the PCA plane is exactly z = const, so
+  // the quadric is a quadric of the frame's (x, y) too.
+  auto quadric = [](double x, double y) { return 0.2 * x * x + 0.1 * y * y; };
+  std::vector<Vec3> points;
+  for (const Vec3& p : sample(101, quadric)) {
+    if (p.x() == 0 || p.y() == 0) continue;  // (the first site is the origin: its mirrors coincide)
+    for (const double sx : {1.0, -1.0})
+      for (const double sy : {1.0, -1.0}) points.emplace_back(sx * p.x(), sy * p.y(), p.z());
+  }
+  PartitionOfUnityParams params;
+  params.polynomial = HeightMapPolynomial::quadratic;
+  const PartitionOfUnity pu(points, params);
+  EXPECT_LT(worst_error(pu, quadric, Eigen::Matrix3d::Identity()), 1e-10);
+}
+
+TEST(PartitionOfUnity, EveryPointOfTheFootprintIsCovered) {
+  const PartitionOfUnity pu(sample(500, [](double x, double y) { return std::sin(2 * x) * std::cos(3 * y); }));
+  const Eigen::AlignedBox2d box = pu.footprint();
+  for (int i = 0; i <= 100; ++i)
+    for (int j = 0; j <= 100; ++j) {
+      const Eigen::Vector2d q = box.min() + box.sizes().cwiseProduct(Eigen::Vector2d(i / 100.0, j / 100.0));
+      EXPECT_GT(pu.evaluate(q.x(), q.y()).weight_sum, 0) << q.transpose();
+    }
+}
+
+TEST(PartitionOfUnity, ARotatedSampleReconstructsAsWellAsTheAxisAlignedOne) {
+  auto wave = [](double x, double y) { return 0.15 * std::sin(2 * x) * std::cos(3 * y); };
+  const double aligned = worst_error(PartitionOfUnity(sample(600, wave)), wave, Eigen::Matrix3d::Identity());
+  const double rotated = worst_error(PartitionOfUnity(sample(600, wave, tilt())), wave, tilt());
+  EXPECT_LT(aligned, 0.01);  // a smooth wave of amplitude 0.15 from 600 samples
+  EXPECT_LT(rotated, 1.5 * aligned + 1e-6);
+}
+
+TEST(PartitionOfUnity, RefusesBadInput) {
+  EXPECT_THROW(PartitionOfUnity(sample(10, [](double, double) { return 0.0; })), InvalidInput);  // < 40 points
+  std::vector<Vec3> points = sample(100, [](double x, double) { return x; });
+  points[5] = points[6];  // two samples at the same place
+  EXPECT_THROW(PartitionOfUnity{points}, InvalidInput);
+  points = sample(100, [](double x, double) { return x; });
+  points[3].x() = std::nan("");
+  EXPECT_THROW(PartitionOfUnity{points}, InvalidInput);
+  PartitionOfUnityParams bad;
+  bad.enlargement = 1.0;
+  EXPECT_THROW(PartitionOfUnity(sample(100, [](double, double) { return 0.0; }), bad), InvalidInput);
+}
+
+TEST(SharedPartitionOfUnity, JacksboroHeldOutPoints) {
+  // The anchors' measurement (../shared/anchors.md): predict the grid points not in the sample.
+  const std::filesystem::path dir = std::filesystem::path(MESHPREP_SHARED_DATA_DIR) / "points";
+  if (!std::filesystem::exists(dir / "jacksboro_10k.xyz"))
+    GTEST_SKIP() << "../shared/data/points not found beside the clone: the jacksboro figure is skipped";
+  auto read = [](const std::filesystem::path& file) {
+    std::vector<Vec3> points;
+    std::ifstream in(file);
+    double x, y, z;
+    while (in >> x >> y >> z) points.emplace_back(x, y, z);
+    return points;
+  };
+  const std::vector<Vec3> sample = read(dir / "jacksboro_10k.xyz"), grid = read(dir / "jacksboro_grid.xyz");
+  std::map<std::pair<long long, long long>, bool> in_sample;
+  for (const Vec3& p : sample) in_sample[{std::llround(p.x() * 1000), std::llround(p.y() * 1000)}] = true;
+  const PartitionOfUnity pu(sample);
+  double squared = 0;
+  std::size_t count = 0;
+  for (const Vec3& p : grid) {
+    if (in_sample.count({std::llround(p.x() * 1000), std::llround(p.y() * 1000)})) continue;
+    // The terrain's PCA plane is nearly horizontal: intersect the vertical through p with the
+    // reconstruction by evaluating at p's frame (x, y) and correcting along the frame normal.
+    const Vec3 local = pu.frame().to_local(p);
+    const Vec3 surface = pu.surface_point(local.x(), local.y());
+    const double error = (surface - p).dot(pu.frame().normal()) / std::abs(pu.frame().normal().z());
+    squared += error * error;
+    ++count;
+  }
+  EXPECT_EQ(count, 128632u);
+  const double rms = std::sqrt(squared / static_cast<double>(count));
+  // Goal 18.7 m (the global thin-plate spline); the prototype measured 18.73 m.
+  EXPECT_LT(rms, 19.0) << rms;
+  RecordProperty("rms_m", std::to_string(rms));
+  std::cout << "jacksboro held-out RMS " << rms << " m\n";
+}
