@@ -31,5 +31,6 @@ Action add_quality_command(CLI::App& app);
 Action add_convert_command(CLI::App& app);
 Action add_tetrahedralize_command(CLI::App& app);
 Action add_simplify_command(CLI::App& app);
+Action add_reconstruct_command(CLI::App& app);
 
 }  // namespace meshprep::cli

@@ -188,5 +188,27 @@ expect_error "simplify non-manifold message" "fin.off: face 4 .*non-manifold"
 "$bin" simplify sphere.off -o out/x.off > /dev/null 2> err.txt; check "simplify without target" 2 $?
 [ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify wrote on a usage error"; }
 
+# reconstruct: a height field from scattered points; bad point files are exit 2, nothing written.
+python3 -c "
+import math
+with open('terrain.xyz', 'w') as f:
+    for i in range(400):
+        x, y = math.fmod(0.5 + i * 0.7548776662466927, 1.0), math.fmod(0.5 + i * 0.5698402909980532, 1.0)
+        f.write('%r %r %r\\n' % (x, y, 0.2 * math.sin(3 * x) * y))
+"
+"$bin" reconstruct terrain.xyz -o out/terrain.off --resolution 30 30 --json out/rec.json > /dev/null 2> err.txt
+check "reconstruct" 0 $?
+python3 -c "
+import json; j = json.load(open('out/rec.json'))
+assert j['points'] == 400 and j['faces'] > 1500 and j['patches'] > 10 and j['reference_normal'][2] > 0.99, j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct json"; }
+head -30 terrain.xyz > few.xyz
+"$bin" reconstruct few.xyz -o out/x.off > /dev/null 2> err.txt; check "reconstruct too few points" 2 $?
+expect_error "reconstruct too few points message" "few.xyz: .*30 points, at least 40"
+(head -5 terrain.xyz; echo "1 2 nan"; tail -100 terrain.xyz) > nan.xyz
+"$bin" reconstruct nan.xyz -o out/x.off > /dev/null 2> err.txt; check "reconstruct NaN" 2 $?
+expect_error "reconstruct NaN message" "nan.xyz"
+[ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct wrote on an error"; }
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

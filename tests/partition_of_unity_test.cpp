@@ -1,6 +1,8 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/partition_of_unity.h"
+#include "meshprep/preprocess/reconstruct.h"
+#include "meshprep/quality/report.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -149,4 +151,27 @@ TEST(SharedPartitionOfUnity, JacksboroHeldOutPoints) {
   EXPECT_LT(rms, 19.0) << rms;
   RecordProperty("rms_m", std::to_string(rms));
   std::cout << "jacksboro held-out RMS " << rms << " m\n";
+}
+
+TEST(Reconstruct, AHoleInTheSampleStaysOpenAndTheMeshManifold) {
+  // A disc of radius 1 without the samples within 0.35 of (0.3, 0): the grid over the footprint
+  // must leave the hole (and the corners outside the disc) out, not paper over them.
+  std::vector<Vec3> points;
+  for (const Eigen::Vector2d& s : scattered(3000)) {
+    if (s.norm() > 1 || (s - Eigen::Vector2d(0.3, 0)).norm() < 0.35) continue;
+    points.emplace_back(s.x(), s.y(), 0.1 * s.x() * s.x());
+  }
+  ReconstructParams params;
+  params.columns = params.rows = 80;
+  const ReconstructResult result = reconstruct_surface(points, params);
+  const QualityReport q = analyze_quality(result.mesh);
+  EXPECT_GT(result.gap_triangles, 0u);
+  EXPECT_TRUE(q.manifold);
+  EXPECT_EQ(q.self_intersections, 0u);
+  EXPECT_EQ(q.boundary_loops, 2u);  // the rim and the hole
+  for (const Triangle& t : result.mesh.triangles) {
+    const Vec3 centre = (result.mesh.points[t[0]] + result.mesh.points[t[1]] + result.mesh.points[t[2]]) / 3.0;
+    EXPECT_GT((centre.head<2>() - Eigen::Vector2d(0.3, 0)).norm(), 0.35 - result.max_gap);
+  }
+  EXPECT_GT(result.normal.z(), 0.99);  // turned up: the faces face +z
 }

@@ -1,8 +1,9 @@
 #include "meshprep/preprocess/partition_of_unity.h"
 
+#include "planar_tree.h"
+
 #include "meshprep/core/errors.h"
 
-#include <nanoflann.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,18 +15,8 @@ namespace {
 
 using Eigen::Vector2d;
 
-// nanoflann's dataset interface over 2D points.
-struct PlanarPoints {
-  const std::vector<Vector2d>* points;
-  std::size_t kdtree_get_point_count() const { return points->size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][static_cast<Eigen::Index>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-
-using PlanarTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PlanarPoints>, PlanarPoints, 2>;
+using detail::PlanarPoints;
+using detail::PlanarTree;
 
 // The k-d tree's cells: median splits across the longer side until at most `leaf` samples remain.
 // Cells tile `cell` (the split planes, not the samples' boxes, bound them).
@@ -75,7 +66,12 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
                        std::to_string(std::max<std::size_t>(params.neighbors, 3)) + " needed");
   for (const Vec3& p : points)
     if (!p.allFinite()) throw InvalidInput(std::string(who) + ": a coordinate is not finite");
-  frame_ = pca_frame(points);
+  // The normal's sign is arbitrary in PCA: turn it towards the axis it is closest to (up for a
+  // terrain, whatever the axis), so the mesh's faces face that way.
+  const Vec3 unoriented = pca_frame(points).normal();
+  Eigen::Index axis = 0;
+  unoriented.cwiseAbs().maxCoeff(&axis);
+  frame_ = pca_frame(points, Vec3::Unit(axis));
   std::vector<Vector2d> planar(points.size());
   std::vector<double> heights(points.size());
   footprint_.setEmpty();

@@ -1,0 +1,38 @@
+#pragma once
+/// \file reconstruct.h
+/// Scattered points -> a triangle mesh over their footprint (the paper's Section 3): the
+/// partition of unity (partition_of_unity.h) evaluated on a regular grid of the reference plane,
+/// two triangles per grid cell. Large missing areas are not papered over: a triangle whose centre
+/// is farther than max_gap (in the plane) from every sample is left out and counted, and so are
+/// the triangles that would then touch the rest at a single vertex (the mesh stays manifold).
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/preprocess/partition_of_unity.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace meshprep {
+
+struct ReconstructParams {
+  PartitionOfUnityParams fit;
+  std::size_t columns = 300, rows = 300;  ///< grid vertices along the footprint's x and y
+  double spacing = 0;  ///< > 0: grid spacing in the plane instead of columns and rows
+  /// Largest distance from a triangle's centre to the nearest sample (in the plane); <= 0 = 3 x
+  /// the median distance between a sample and its nearest neighbour.
+  double max_gap = 0;
+};
+
+struct ReconstructResult {
+  TriangleSoup mesh;
+  std::size_t patches = 0;
+  double max_gap = 0;            ///< the value used
+  std::size_t gap_triangles = 0;  ///< left out: over a gap, or touching the rest at a vertex only
+  Vec3 normal = Vec3::UnitZ();    ///< of the reference plane (the PCA frame of the points)
+};
+
+/// \throws InvalidInput as PartitionOfUnity, or if the grid has fewer than 2 x 2 vertices or more
+///         than 10^8.
+ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const ReconstructParams& params = {});
+
+}  // namespace meshprep
