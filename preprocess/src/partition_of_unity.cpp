@@ -1,8 +1,8 @@
 #include "meshprep/preprocess/partition_of_unity.h"
 
-#include "planar_tree.h"
-
 #include "meshprep/core/errors.h"
+
+#include <nanoflann.hpp>
 
 
 #include <algorithm>
@@ -15,8 +15,18 @@ namespace {
 
 using Eigen::Vector2d;
 
-using detail::PlanarPoints;
-using detail::PlanarTree;
+// nanoflann's dataset interface over 2D points.
+struct PlanarPoints {
+  const std::vector<Vector2d>* points;
+  std::size_t kdtree_get_point_count() const { return points->size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][static_cast<Eigen::Index>(dim)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+using PlanarTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PlanarPoints>, PlanarPoints, 2>;
 
 // The k-d tree's cells: median splits across the longer side until at most `leaf` samples remain.
 // Cells tile `cell` (the split planes, not the samples' boxes, bound them).
@@ -42,13 +52,17 @@ void split_cells(const std::vector<Vector2d>& points, std::vector<std::uint32_t>
 
 }  // namespace
 
+// A k-d tree that owns the points it indexes. It lives on the heap and never moves (the tree
+// points into it), so a moved PartitionOfUnity keeps valid trees.
+struct PlanarIndex {
+  std::vector<Vector2d> points;
+  PlanarPoints adaptor{&points};
+  PlanarTree tree{2, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(10)};
+  explicit PlanarIndex(std::vector<Vector2d> p) : points(std::move(p)) { tree.buildIndex(); }
+};
+
 struct PartitionOfUnity::Index {
-  PlanarPoints points;
-  PlanarTree tree;
-  explicit Index(const std::vector<Vector2d>* centres)
-      : points{centres}, tree(2, points, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {
-    tree.buildIndex();
-  }
+  std::unique_ptr<PlanarIndex> samples, centres;
 };
 
 double wendland_weight(double r) {
@@ -87,9 +101,11 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   std::vector<Eigen::AlignedBox2d> cells;
   split_cells(planar, order, 0, order.size(), footprint_, params.leaf_size, cells);
 
-  PlanarPoints samples{&planar};
-  PlanarTree sample_tree(2, samples, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  sample_tree.buildIndex();
+  index_ = std::make_unique<Index>();
+  index_->samples = std::make_unique<PlanarIndex>(std::move(planar));
+  const PlanarIndex& samples = *index_->samples;
+  const std::vector<Vector2d>& sample_points = samples.points;
+  std::vector<Vector2d> centres;
   const std::size_t k = params.neighbors;
   std::vector<std::uint32_t> nearest(k);
   std::vector<double> squared(k);
@@ -98,29 +114,55 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   for (const Eigen::AlignedBox2d& cell : cells) {
     const Vector2d centre = cell.center();
     const double query[2] = {centre.x(), centre.y()};
-    sample_tree.knnSearch(query, k, nearest.data(), squared.data());
+    samples.tree.knnSearch(query, k, nearest.data(), squared.data());
     for (std::size_t j = 0; j < k; ++j) {
-      sites[j] = planar[nearest[j]];
+      sites[j] = sample_points[nearest[j]];
       values[static_cast<Eigen::Index>(j)] = heights[nearest[j]];
     }
-    centres_.push_back(centre);
+    centres.push_back(centre);
     radii_.push_back(std::max(params.enlargement * 0.5 * cell.diagonal().norm(), 1e-300));
     largest_radius_ = std::max(largest_radius_, radii_.back());
     fits_.emplace_back(sites, values, params.polynomial);
   }
-  index_ = std::make_unique<Index>(&centres_);
+  index_->centres = std::make_unique<PlanarIndex>(std::move(centres));
 }
 
 PartitionOfUnity::~PartitionOfUnity() = default;
 PartitionOfUnity::PartitionOfUnity(PartitionOfUnity&&) noexcept = default;
 PartitionOfUnity& PartitionOfUnity::operator=(PartitionOfUnity&&) noexcept = default;
 
+std::size_t PartitionOfUnity::patches() const { return radii_.size(); }
+
+double PartitionOfUnity::nearest_sample_distance(double x, double y) const {
+  std::uint32_t index = 0;
+  double squared = 0;
+  const double query[2] = {x, y};
+  index_->samples->tree.knnSearch(query, 1, &index, &squared);
+  return std::sqrt(squared);
+}
+
+double PartitionOfUnity::median_sample_spacing() const {
+  std::vector<double> spacing;
+  spacing.reserve(index_->samples->points.size());
+  std::uint32_t index[2];
+  double squared[2];
+  for (const Vector2d& p : index_->samples->points) {
+    const double query[2] = {p.x(), p.y()};
+    index_->samples->tree.knnSearch(query, 2, index, squared);
+    spacing.push_back(std::sqrt(squared[1]));
+  }
+  const auto middle = spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2);
+  std::nth_element(spacing.begin(), middle, spacing.end());
+  return *middle;
+}
+
 PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {
   const double query[2] = {x, y};
-  std::vector<std::pair<std::uint32_t, double>> within;
+  thread_local std::vector<std::pair<std::uint32_t, double>> within;  // reused: no allocation per call
+  within.clear();
   nanoflann::SearchParams search;
   search.sorted = false;
-  index_->tree.radiusSearch(query, largest_radius_ * largest_radius_, within, search);
+  index_->centres->tree.radiusSearch(query, largest_radius_ * largest_radius_, within, search);
   std::sort(within.begin(), within.end());  // a fixed summation order: deterministic results
   Value value;
   double weighted = 0;

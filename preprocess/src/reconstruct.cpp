@@ -1,7 +1,5 @@
 #include "meshprep/preprocess/reconstruct.h"
 
-#include "planar_tree.h"
-
 #include "meshprep/core/errors.h"
 
 #include <tbb/parallel_for.h>
@@ -14,32 +12,6 @@ namespace meshprep {
 namespace {
 
 using Eigen::Vector2d;
-
-using detail::PlanarPoints;
-using detail::PlanarTree;
-
-double nearest_distance(const PlanarTree& tree, const Vector2d& q) {
-  std::uint32_t index = 0;
-  double squared = 0;
-  const double query[2] = {q.x(), q.y()};
-  tree.knnSearch(query, 1, &index, &squared);
-  return std::sqrt(squared);
-}
-
-// Three times the median distance from a sample to its nearest neighbour.
-double default_gap(const PlanarTree& tree, const std::vector<Vector2d>& planar) {
-  std::vector<double> spacing;
-  std::uint32_t index[2];
-  double squared[2];
-  for (const Vector2d& p : planar) {
-    const double query[2] = {p.x(), p.y()};
-    tree.knnSearch(query, 2, index, squared);
-    spacing.push_back(std::sqrt(squared[1]));
-  }
-  const auto middle = spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2);
-  std::nth_element(spacing.begin(), middle, spacing.end());
-  return 3.0 * *middle;
-}
 
 // Leaving triangles out over gaps can leave two fans of triangles touching at one vertex (a
 // bow tie: not a manifold). At every such vertex the largest fan stays and the others go, until
@@ -95,13 +67,7 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
   ReconstructResult result;
   result.patches = pu.patches();
   result.normal = pu.frame().normal();
-  std::vector<Vector2d> planar;
-  planar.reserve(points.size());
-  for (const Vec3& p : points) planar.push_back(pu.frame().to_local(p).head<2>());
-  PlanarPoints samples{&planar};
-  PlanarTree tree(2, samples, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  tree.buildIndex();
-  result.max_gap = params.max_gap > 0 ? params.max_gap : default_gap(tree, planar);
+  result.max_gap = params.max_gap > 0 ? params.max_gap : 3.0 * pu.median_sample_spacing();
 
   const Eigen::AlignedBox2d box = pu.footprint();
   std::size_t nx = params.columns, ny = params.rows;
@@ -133,7 +99,7 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
                                    corner + Vector2d(step.x(), 2 * step.y()) / 3.0};
       const Triangle cell[2] = {{id(i, j), id(i + 1, j), id(i + 1, j + 1)}, {id(i, j), id(i + 1, j + 1), id(i, j + 1)}};
       for (int k = 0; k < 2; ++k) {
-        if (nearest_distance(tree, centres[k]) > result.max_gap) {
+        if (pu.nearest_sample_distance(centres[k].x(), centres[k].y()) > result.max_gap) {
           ++result.gap_triangles;
           continue;
         }

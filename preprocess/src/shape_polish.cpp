@@ -91,24 +91,8 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
     const Vec3 y = slide_to_quadric(q, tangential, normal, 0.5 * reach);
     const double error = rms_plane_distance(q, y);
     if (error > tolerance && error > rms_plane_distance(q, x)) continue;
-    double old_cosine = -1, new_cosine = -1;
-    bool turned = false;
-    for (const auto f : mesh.vf_range(v)) {
-      Vec3 before[3], after[3];
-      int k = 0;
-      for (const VertexHandle w : mesh.fv_range(f)) {
-        before[k] = point(mesh, w);
-        after[k++] = w == v ? y : point(mesh, w);
-      }
-      const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
-      if (n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm()) {
-        turned = true;
-        break;
-      }
-      old_cosine = std::max(old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
-      new_cosine = std::max(new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
-    }
-    if (turned || !(new_cosine < old_cosine)) continue;
+    const VertexMove move = vertex_move(mesh, v, y, kTurnCosine);
+    if (move.turns || !(move.new_cosine < move.old_cosine)) continue;
     mesh.set_point(v, to_openmesh(y));
     ++moves;
   }

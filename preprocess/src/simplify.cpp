@@ -109,16 +109,15 @@ int survivor(std::vector<int>& merged_into, int v) {
   return root;
 }
 
-// Halve the error allowed around the crossings: every input vertex merged into a corner of a
-// crossing face (or, grow > 0, into a vertex up to `grow` rings from one) may now only be
+// Halve the error allowed around the crossings (`output` is soup_from_mesh(simplified)): every
+// input vertex merged into a corner of a crossing face (or, grow > 0, into a vertex up to `grow` rings from one) may now only be
 // collapsed to half the error its survivor reached.
-void tighten_around_crossings(const TriMesh& simplified, const std::vector<detail::Quadric>& quadrics,
-                              const SelfIntersections& crossings, int grow, std::vector<int>& merged_into,
-                              std::vector<double>& error_cap) {
+void tighten_around_crossings(const TriMesh& simplified, const TriangleSoup& output,
+                              const std::vector<detail::Quadric>& quadrics, const SelfIntersections& crossings,
+                              int grow, std::vector<int>& merged_into, std::vector<double>& error_cap) {
   std::vector<int> soup_to_mesh;  // soup_from_mesh numbers the surviving vertices in order
   for (const auto v : simplified.all_vertices())
     if (!simplified.status(v).deleted()) soup_to_mesh.push_back(v.idx());
-  const TriangleSoup output = soup_from_mesh(simplified);
   std::vector<char> hot(simplified.n_vertices(), 0);
   for (const auto& [f, g] : crossings.pairs)
     for (const std::size_t face : {f, g})
@@ -145,19 +144,18 @@ void tighten_around_crossings(const TriMesh& simplified, const std::vector<detai
 // simplify until their error fits between them.
 void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyResult& result) {
   const TriangleSoup original = detail::in_spatial_order(soup_from_mesh(mesh));
-  mesh = mesh_from_soup(original);
-  request_collapse_attributes(mesh);
-  const TriMesh input = mesh;
-  std::vector<double> error_cap(mesh.n_vertices(), std::numeric_limits<double>::infinity());
+  std::vector<double> error_cap(original.points.size(), std::numeric_limits<double>::infinity());
   for (int attempt = 0;; ++attempt) {
+    mesh = mesh_from_soup(original);  // (again on a restart: no copy of the input is kept)
+    request_collapse_attributes(mesh);
     std::vector<int> merged_into(mesh.n_vertices());
     std::iota(merged_into.begin(), merged_into.end(), 0);
     const std::vector<detail::Quadric> quadrics = decimate_once(mesh, params, original, error_cap, merged_into, result);
-    const SelfIntersections crossings = find_self_intersections(soup_from_mesh(mesh));
+    const TriangleSoup output = soup_from_mesh(mesh);
+    const SelfIntersections crossings = find_self_intersections(output);
     if (crossings.count == 0 || attempt == kRetries) return;
     if (attempt == 0 && find_self_intersections(original, 1).count > 0) return;  // not ours to fix
-    tighten_around_crossings(mesh, quadrics, crossings, attempt, merged_into, error_cap);
-    mesh = input;
+    tighten_around_crossings(mesh, output, quadrics, crossings, attempt, merged_into, error_cap);
     const SimplifyResult counters = result;
     result = SimplifyResult{};
     result.faces_before = counters.faces_before;

@@ -29,21 +29,8 @@ struct NormalStep {
 // The move keeps every face within 30 degrees of its normal and does not take a smallest angle
 // below min(the guard's bound, what it was).
 bool move_keeps_shape(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to, double min_angle_cosine) {
-  double old_cosine = -1, new_cosine = -1;
-  for (const auto f : mesh.vf_range(v)) {
-    Vec3 before[3], after[3];
-    int k = 0;
-    for (const VertexHandle w : mesh.fv_range(f)) {
-      before[k] = point(mesh, w);
-      after[k] = w == v ? moved_to : before[k];
-      ++k;
-    }
-    const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
-    if (n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm()) return false;
-    old_cosine = std::max(old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
-    new_cosine = std::max(new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
-  }
-  return new_cosine <= std::max(min_angle_cosine, old_cosine);
+  const VertexMove move = vertex_move(mesh, v, moved_to, kTurnCosine);
+  return !move.turns && move.new_cosine <= std::max(min_angle_cosine, move.old_cosine);
 }
 
 }  // namespace

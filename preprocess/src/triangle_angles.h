@@ -1,5 +1,5 @@
 #pragma once
-// Shape tests of the simplifier's guards and polish, without trigonometry.
+// Shape tests of the simplifier's guards, polish and fit, without trigonometry.
 
 #include "meshprep/core/mesh.h"
 
@@ -19,5 +19,33 @@ inline double smallest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c)
 
 /// (b - a) x (c - a): twice the area times the unit normal.
 inline Vec3 area_normal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+/// What moving vertex v to `moved_to` does to the faces around it.
+struct VertexMove {
+  bool turns = false;       ///< a face normal turns by more than the angle whose cosine was given
+  double old_cosine = -1;   ///< largest smallest_angle_cosine of the faces before the move
+  double new_cosine = -1;   ///< and after (both meaningful only when !turns)
+};
+
+inline VertexMove vertex_move(const TriMesh& mesh, TriMesh::VertexHandle v, const Vec3& moved_to, double turn_cosine) {
+  VertexMove move;
+  for (const auto f : mesh.vf_range(v)) {
+    Vec3 before[3], after[3];
+    int k = 0;
+    for (const auto w : mesh.fv_range(f)) {
+      before[k] = to_eigen(mesh.point(w));
+      after[k] = w == v ? moved_to : before[k];
+      ++k;
+    }
+    const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
+    if (n0.dot(n1) <= turn_cosine * n0.norm() * n1.norm()) {
+      move.turns = true;
+      return move;
+    }
+    move.old_cosine = std::max(move.old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
+    move.new_cosine = std::max(move.new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
+  }
+  return move;
+}
 
 }  // namespace meshprep::detail

@@ -48,7 +48,11 @@ class PartitionOfUnity {
   const LocalFrame& frame() const { return frame_; }
   /// The samples' bounding rectangle in the frame's (x, y).
   const Eigen::AlignedBox2d& footprint() const { return footprint_; }
-  std::size_t patches() const { return centres_.size(); }
+  std::size_t patches() const;
+  /// Distance in the plane from frame coordinates (x, y) to the nearest sample.
+  double nearest_sample_distance(double x, double y) const;
+  /// The median, over the samples, of the distance (in the plane) to their nearest neighbour.
+  double median_sample_spacing() const;
 
   struct Value {
     double height = 0;      ///< f(x, y), the height above the reference plane
@@ -63,11 +67,10 @@ class PartitionOfUnity {
   struct Index;
   LocalFrame frame_;
   Eigen::AlignedBox2d footprint_;
-  std::vector<Eigen::Vector2d> centres_;
   std::vector<double> radii_;
   std::vector<HeightMapSpline> fits_;
   double largest_radius_ = 0;
-  std::unique_ptr<Index> index_;  // k-d tree over the centres
+  std::unique_ptr<Index> index_;  // k-d trees over the samples and the cell centres
 };
 
 }  // namespace meshprep
