@@ -113,7 +113,7 @@ TEST_P(RoundTrip, PreservesTrianglesAndCoordinates) {
   const FormatCase c = GetParam();
   const TriangleSoup soup = tetrahedron();
   const std::string target = path(std::string("mesh.") + c.extension);
-  write_soup(soup, target, WriteOptions{c.binary});
+  write_soup(soup, target, WriteOptions{c.binary, {}});
 
   ReadReport report;
   const TriangleSoup back = read_soup(target, &report);
@@ -171,13 +171,112 @@ TEST_F(IoTest, WriterRejectsUnknownExtensionAndBadSoup) {
 }
 
 TEST_F(IoTest, BinaryStlIsSmallAndHasNormals) {
-  write_soup(tetrahedron(), path("t.stl"), WriteOptions{true});
+  write_soup(tetrahedron(), path("t.stl"), WriteOptions{true, {}});
   const std::string bytes = read_text(path("t.stl"));
   ASSERT_EQ(bytes.size(), 84u + 50u * 4u);
   EXPECT_NE(bytes.compare(0, 5, "solid"), 0);
   float normal[3];
   std::memcpy(normal, bytes.data() + 84, sizeof normal);
   EXPECT_NEAR(std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]), 1.0, 1e-6);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Per-vertex scalars
+
+// The tetrahedron's surface variation (all 1/3 for a regular one; these are arbitrary) and a
+// second field, values that are not exact in decimal.
+std::vector<VertexScalar> two_vertex_scalars() {
+  return {{"sigma", {0.0, 1.0 / 3.0, 0.1, 2.5e-17}}, {"quality", {-1.0, 1e300, 0.7, 4.0 / 7.0}}};
+}
+
+// The header lines of a PLY file, and where its data starts.
+std::vector<std::string> ply_header_lines(const std::string& content, std::size_t& data_offset) {
+  const std::string end = "end_header\n";
+  data_offset = content.find(end) + end.size();
+  std::vector<std::string> lines;
+  std::istringstream in(content.substr(0, data_offset));
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+class PlyVertexScalars : public IoTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(PlyVertexScalars, FollowTheCoordinatesAndReadBackAsTheSameMesh) {
+  const bool binary = GetParam();
+  const TriangleSoup soup = tetrahedron();
+  WriteOptions options;
+  options.binary = binary;
+  options.vertex_scalars = two_vertex_scalars();
+  write_soup(soup, path("sigma.ply"), options);
+
+  // Our reader skips the extra properties: the geometry is intact.
+  const TriangleSoup back = read_soup(path("sigma.ply"));
+  EXPECT_EQ(back.points, soup.points);
+  EXPECT_EQ(back.triangles, soup.triangles);
+
+  const std::string content = read_text(path("sigma.ply"));
+  std::size_t data = 0;
+  const std::vector<std::string> header = ply_header_lines(content, data);
+  const std::size_t z = std::find(header.begin(), header.end(), "property double z") - header.begin();
+  ASSERT_LT(z + 3, header.size());
+  EXPECT_EQ(header[z + 1], "property double sigma");
+  EXPECT_EQ(header[z + 2], "property double quality");
+  EXPECT_EQ(header[z + 3], "element face 4");
+
+  // Each vertex: x y z sigma quality, exactly the doubles given.
+  const std::vector<VertexScalar> scalars = two_vertex_scalars();
+  std::istringstream text(content.substr(data));
+  std::size_t offset = data;
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const double expected[5] = {soup.points[i].x(), soup.points[i].y(), soup.points[i].z(), scalars[0].values[i],
+                                scalars[1].values[i]};
+    for (const double value : expected) {
+      if (binary) {
+        EXPECT_EQ(content.substr(offset, 8), bytes_of(value)) << "vertex " << i;
+        offset += 8;
+      } else {
+        std::string token;
+        text >> token;
+        EXPECT_EQ(std::strtod(token.c_str(), nullptr), value) << "vertex " << i << ": " << token;
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AsciiAndBinary, PlyVertexScalars, ::testing::Bool(),
+                         [](const auto& test_info) { return std::string(test_info.param ? "binary" : "ascii"); });
+
+TEST_F(IoTest, FormatsWithoutVertexPropertiesDropTheScalars) {
+  WriteOptions options;
+  options.vertex_scalars = two_vertex_scalars();
+  for (const std::string extension : {"off", "obj", "stl"}) {
+    write_soup(tetrahedron(), path("plain." + extension));
+    write_soup(tetrahedron(), path("scalars." + extension), options);
+    EXPECT_EQ(read_text(path("scalars." + extension)), read_text(path("plain." + extension))) << extension;
+  }
+}
+
+TEST_F(IoTest, InvalidVertexScalarsAreRejectedBeforeWriting) {
+  const auto message_for = [&](std::vector<VertexScalar> scalars) {
+    WriteOptions options;
+    options.vertex_scalars = std::move(scalars);
+    try {
+      write_soup(tetrahedron(), path("bad.ply"), options);
+    } catch (const InvalidInput& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  const std::vector<double> four(4, 0.5);
+  EXPECT_NE(message_for({{"sigma", {0.5, 0.5, 0.5}}}).find("3 values for 4 points"), std::string::npos);
+  EXPECT_NE(message_for({{"", four}}).find("one printable word"), std::string::npos);
+  EXPECT_NE(message_for({{"surface variation", four}}).find("one printable word"), std::string::npos);
+  EXPECT_NE(message_for({{"sigma\n", four}}).find("one printable word"), std::string::npos);
+  EXPECT_NE(message_for({{"z", four}}).find("other than x, y, z"), std::string::npos);
+  EXPECT_NE(message_for({{"sigma", four}, {"sigma", four}}).find("'sigma' twice"), std::string::npos);
+  EXPECT_NE(message_for({{"sigma", {0.5, std::nan(""), 0.5, 0.5}}}).find("value 1 is not finite"), std::string::npos);
+  EXPECT_NE(message_for({{"sigma", four}, {"q", {}}}).find("bad.ply"), std::string::npos);
+  EXPECT_TRUE(directory_entries().empty());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,6 +1,6 @@
-// Soup writers: OFF, OBJ, PLY (ASCII or binary little endian, double coordinates) and STL (ASCII or
-// binary float32 with facet normals). Text coordinates are written with std::to_chars, the
-// shortest text that reads back to the identical double.
+// Soup writers: OFF, OBJ, PLY (ASCII or binary little endian, double coordinates and per-vertex
+// scalars) and STL (ASCII or binary float32 with facet normals). Text numbers are written with
+// std::to_chars, the shortest text that reads back to the identical double.
 #include "meshprep/core/io.h"
 
 #include "meshprep/core/atomic_file.h"
@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include <charconv>
+#include <cmath>
 #include <limits>
 #include <ostream>
 
@@ -85,15 +86,19 @@ void write_obj(const TriangleSoup& soup, OutputBuffer& out) {
   for (const Triangle& t : soup.triangles) out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
 }
 
-void write_ply(const TriangleSoup& soup, OutputBuffer& out, bool binary) {
+void write_ply(const TriangleSoup& soup, const std::vector<VertexScalar>& scalars, OutputBuffer& out, bool binary) {
   out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment written by meshprep\n"
-      << "element vertex " << soup.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
-      << "element face " << soup.triangles.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
-  for (const Vec3& p : soup.points) {
+      << "element vertex " << soup.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n";
+  for (const VertexScalar& scalar : scalars) out << "property double " << scalar.name << "\n";
+  out << "element face " << soup.triangles.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Vec3& p = soup.points[i];
     if (binary) {
       for (int k = 0; k < 3; ++k) out.binary(p[k]);
+      for (const VertexScalar& scalar : scalars) out.binary(scalar.values[i]);
     } else {
       write_point(out, p);
+      for (const VertexScalar& scalar : scalars) out << " " << scalar.values[i];
       out << "\n";
     }
   }
@@ -160,6 +165,38 @@ void check_writable(const TriangleSoup& soup, const std::string& path) {
   }
 }
 
+// A PLY property name is one word; x, y and z are taken by the coordinates.
+bool is_valid_scalar_name(const std::string& name) {
+  if (name.empty() || name == "x" || name == "y" || name == "z") return false;
+  for (const char c : name) {
+    if (c <= ' ' || c > '~') return false;  // whitespace, control characters and non-ASCII bytes
+  }
+  return true;
+}
+
+// One finite value per point under a valid, distinct name; checked before anything is written.
+void check_vertex_scalars(const TriangleSoup& soup, const std::vector<VertexScalar>& scalars, const std::string& path) {
+  for (std::size_t s = 0; s < scalars.size(); ++s) {
+    const VertexScalar& scalar = scalars[s];
+    const std::string name = "'" + scalar.name + "'";
+    if (!is_valid_scalar_name(scalar.name)) {
+      detail::fail(path, "cannot write vertex scalar " + name + ": a name is one printable word other than x, y, z");
+    }
+    for (std::size_t earlier = 0; earlier < s; ++earlier) {
+      if (scalars[earlier].name == scalar.name) detail::fail(path, "cannot write vertex scalar " + name + " twice");
+    }
+    if (scalar.values.size() != soup.points.size()) {
+      detail::fail(path, "cannot write vertex scalar " + name + ": " + std::to_string(scalar.values.size()) +
+                             " values for " + std::to_string(soup.points.size()) + " points");
+    }
+    for (std::size_t i = 0; i < scalar.values.size(); ++i) {
+      if (!std::isfinite(scalar.values[i])) {
+        detail::fail(path, "cannot write vertex scalar " + name + ": value " + std::to_string(i) + " is not finite");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOptions& options) {
@@ -168,6 +205,7 @@ void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOp
     detail::fail(path, detail::unknown_extension_problem(extension));
   }
   check_writable(soup, path);
+  check_vertex_scalars(soup, options.vertex_scalars, path);
   const bool binary = options.binary && (extension == "ply" || extension == "stl");
   write_file_atomically(
       path,
@@ -178,7 +216,7 @@ void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOp
         } else if (extension == "obj") {
           write_obj(soup, out);
         } else if (extension == "ply") {
-          write_ply(soup, out, binary);
+          write_ply(soup, options.vertex_scalars, out, binary);
         } else if (binary) {
           write_stl_binary(soup, out);
         } else {

@@ -7,7 +7,7 @@
 /// | --- | --- | --- | --- |
 /// | .off | yes | yes | polygons are fan-triangulated on read |
 /// | .obj | yes | yes | `v` and `f` records (v, v/t, v/t/n, v//n, negative indices); polygons triangulated |
-/// | .ply | yes | yes | ASCII, binary little and big endian; polygons triangulated |
+/// | .ply | yes | yes | ASCII, binary little and big endian; polygons triangulated; writes per-vertex scalars |
 /// | .stl | yes | yes | ASCII and binary (also binary files whose header starts with "solid"); equal corners merged |
 /// | .xyz | points | no | `x y z` or `x y z nx ny nz` per line, `#` comments |
 ///
@@ -49,16 +49,31 @@ struct LoadedMesh {
 /// read_soup + mesh_from_soup.
 LoadedMesh load_mesh(const std::string& path);
 
+/// A named value per point of a mesh (e.g. the surface variation sigma, see quality/surface_variation.h).
+struct VertexScalar {
+  std::string name;            ///< one printable ASCII word, not x, y or z
+  std::vector<double> values;  ///< one finite value per point, in point order
+};
+
 /// Options for writing a mesh.
 struct WriteOptions {
   bool binary = false;  ///< PLY and STL: binary instead of ASCII
+  /// Per-vertex scalars. Only PLY stores them (`property double NAME` after x, y, z, in this
+  /// order); OFF, OBJ and STL have no place for them and drop them, so a caller that must keep
+  /// them writes .ply. They are validated whatever the format.
+  std::vector<VertexScalar> vertex_scalars;
 };
 
-/// Write a halfedge mesh (format from the extension), atomically.
-/// \throws InvalidInput for an unknown extension; IoError if the file cannot be written.
+/// Write a halfedge mesh (format from the extension), atomically. Vertex scalars hold one value per
+/// vertex that is not deleted, in index order (the numbering of soup_from_mesh).
+/// \throws InvalidInput for an unknown extension or invalid vertex scalars; IoError if the file cannot be written.
 void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
-/// Write a soup (format from the extension), atomically.
+/// Write a soup (format from the extension), atomically. Nothing is written when the input is
+/// invalid.
+/// \throws InvalidInput for an unknown extension, a non-finite point or an index out of range, and
+/// for a vertex scalar with an empty, duplicate, non-printable or x/y/z name, a value count other
+/// than soup.points.size() or a non-finite value; IoError if the file cannot be written.
 void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOptions& options = {});
 
 /// A point set, with normals when every line had six values.
