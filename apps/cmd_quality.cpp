@@ -88,7 +88,8 @@ Action add_quality_command(CLI::App& app) {
   cmd->add_option("--reference", o->reference, "Reference surface: adds Hausdorff/RMS/mean distance and volume change");
   cmd->add_option("--json", o->json, "Write the report as JSON to FILE ('-' = stdout, replaces the table)");
   cmd->add_option("--csv", o->csv, "Write one row per face to FILE");
-  cmd->add_option("--vtk", o->vtk, "Write the mesh with per-face metrics as cell data (legacy VTK, for ParaView)");
+  cmd->add_option("--vtk", o->vtk, "Write the mesh with per-face metrics as cell data and the surface variation "
+                  "of each vertex as point data (legacy VTK, for ParaView)");
   cmd->add_option("--html", o->html, "Write a self-contained HTML report with histograms");
   cmd->add_option("--fail-on", o->fail_on,
                   "Quality gate: exit 1 if any condition holds, e.g. \"radius_ratio.p95>3,closed=false\"");

@@ -2,6 +2,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/quality/report_writers.h"
+#include "meshprep/quality/surface_variation.h"
 
 #include <gtest/gtest.h>
 
@@ -314,7 +315,7 @@ class VtkReader {
   std::size_t pos_ = 0;
 };
 
-TEST_F(ReportFiles, VtkIsBinaryPolydataWithEveryMetricAsCellData) {
+TEST_F(ReportFiles, VtkIsBinaryPolydataWithFaceMetricsAndVertexVariation) {
   const TriangleSoup soup = two_triangles();
   const QualityReport report = two_triangle_report();
   write_vtk(file("faces.vtk"), soup, report);
@@ -357,6 +358,16 @@ TEST_F(ReportFiles, VtkIsBinaryPolydataWithEveryMetricAsCellData) {
   ASSERT_EQ(vtk.line(), "LOOKUP_TABLE default");
   EXPECT_EQ(vtk.integer(), 0);
   EXPECT_EQ(vtk.integer(), 1);
+  EXPECT_EQ(vtk.line(), "");
+
+  // Every point's 2-ring is all four (non-coplanar) points: one positive sigma for all.
+  ASSERT_EQ(vtk.line(), "POINT_DATA 4");
+  ASSERT_EQ(vtk.line(), "SCALARS surface_variation double 1");
+  ASSERT_EQ(vtk.line(), "LOOKUP_TABLE default");
+  for (const double sigma : surface_variation(soup)) {
+    EXPECT_GT(sigma, 0.0);
+    EXPECT_EQ(vtk.real(), sigma);
+  }
   EXPECT_EQ(vtk.line(), "");
   EXPECT_TRUE(vtk.at_end());
 }

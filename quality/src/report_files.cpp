@@ -1,6 +1,8 @@
-// write_csv and write_vtk: the per-face metrics of a report, for spreadsheets and ParaView.
+// write_csv and write_vtk: the per-face metrics of a report, for spreadsheets and ParaView; the VTK
+// file also holds the per-vertex surface variation, the paper's "curvature analysis" picture.
 
 #include "meshprep/quality/report_writers.h"
+#include "meshprep/quality/surface_variation.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
@@ -96,11 +98,17 @@ void write_vtk_polygons(std::ostream& out, const TriangleSoup& soup) {
   out << "POLYGONS " << soup.triangles.size() << ' ' << 4 * soup.triangles.size() << '\n' << data << '\n';
 }
 
-void write_vtk_metric(std::ostream& out, const FaceMetric& metric, const std::vector<TriangleShape>& shapes) {
+// A SCALARS block named `name` holding value(i) for i < count.
+template <class Value>
+void write_vtk_doubles(std::ostream& out, const char* name, std::size_t count, Value value) {
   std::string data;
-  data.reserve(8 * shapes.size());
-  for (const TriangleShape& shape : shapes) append_double(data, shape.*metric.field);
-  out << "SCALARS " << metric.name << " double 1\nLOOKUP_TABLE default\n" << data << '\n';
+  data.reserve(8 * count);
+  for (std::size_t i = 0; i < count; ++i) append_double(data, value(i));
+  out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n" << data << '\n';
+}
+
+void write_vtk_metric(std::ostream& out, const FaceMetric& metric, const std::vector<TriangleShape>& shapes) {
+  write_vtk_doubles(out, metric.name, shapes.size(), [&](std::size_t f) { return shapes[f].*metric.field; });
 }
 
 void write_vtk_degenerate(std::ostream& out, const std::vector<TriangleShape>& shapes) {
@@ -123,6 +131,7 @@ void write_csv(const std::string& path, const TriangleSoup& soup, const QualityR
 void write_vtk(const std::string& path, const TriangleSoup& soup, const QualityReport& report) {
   require_one_shape_per_face(path, soup, report);
   require_vtk_sizes(path, soup);
+  const std::vector<double> sigma = surface_variation(soup);
   write_file_atomically(
       path,
       [&](std::ostream& out) {
@@ -132,6 +141,8 @@ void write_vtk(const std::string& path, const TriangleSoup& soup, const QualityR
         out << "CELL_DATA " << soup.triangles.size() << '\n';
         for (const FaceMetric& metric : kFaceMetrics) write_vtk_metric(out, metric, report.face_shapes);
         write_vtk_degenerate(out, report.face_shapes);
+        out << "POINT_DATA " << soup.points.size() << '\n';
+        write_vtk_doubles(out, "surface_variation", sigma.size(), [&](std::size_t v) { return sigma[v]; });
       },
       /*binary=*/true);
 }

@@ -1,8 +1,9 @@
 #pragma once
 /// \file report_writers.h
 /// Ways to present a QualityReport: JSON (the machine interface; keys are stable), a text summary
-/// table, a per-face CSV, a VTK file for ParaView with every per-face metric as cell data, and one
-/// self-contained HTML page with inline SVG histograms. File writers are atomic.
+/// table, a per-face CSV, a VTK file for ParaView with every per-face metric as cell data and the
+/// per-vertex surface variation as point data, and one self-contained HTML page with inline SVG
+/// histograms. File writers are atomic.
 
 #include "meshprep/core/mesh.h"
 #include "meshprep/quality/report.h"
@@ -23,7 +24,9 @@ void write_text_summary(std::ostream& out, const QualityReport& report);
 /// One row per face: index, the three vertex indices, every TriangleShape field.
 void write_csv(const std::string& path, const TriangleSoup& soup, const QualityReport& report);
 
-/// Legacy VTK polydata with every per-face metric as CELL_DATA scalars.
+/// Legacy VTK polydata (binary) with every per-face metric as CELL_DATA scalars and the surface
+/// variation sigma of every vertex (surface_variation.h, computed here from `soup`) as POINT_DATA
+/// scalars "surface_variation".
 void write_vtk(const std::string& path, const TriangleSoup& soup, const QualityReport& report);
 
 /// One self-contained page: the summary, checks in green/red, an SVG histogram per metric.
