@@ -1,10 +1,12 @@
-// meshprep reconstruct POINTS.xyz -o MESH [--resolution NX NY | --spacing H] [--leaf-size K]
-//   [--neighbors N] [--max-gap G] [--json FILE|-]
+// meshprep reconstruct POINTS.xyz -o MESH [--resolution NX NY | --vertices N | --spacing H]
+//   [--leaf-size K] [--neighbors N] [--variation-threshold T|pNN] [--variation-growth G]
+//   [--adaptive] [--max-gap G] [--json FILE|-]
 #include "cli_common.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/reconstruct.h"
+#include "meshprep/quality/json_values.h"
 
 #include <chrono>
 #include <iostream>
@@ -17,9 +19,30 @@ namespace {
 struct ReconstructOptions {
   std::string input, output, json;
   std::vector<std::size_t> resolution{300, 300};
-  double spacing = 0, max_gap = 0;
-  std::size_t leaf_size = 16, neighbors = 40;
+  double spacing = 0, max_gap = 0, variation_growth = 1.5;
+  bool adaptive = false;
+  std::size_t leaf_size = 16, neighbors = 40, vertices = 0;
+  std::string variation_threshold = "p90";
 };
+
+// "0.3" is a fixed sigma threshold, "p90" the 90th percentile of the patches' sigma.
+void set_variation_rule(const std::string& rule, PartitionOfUnityParams& fit) {
+  const bool percentile = !rule.empty() && rule[0] == 'p';
+  const double value = std::stod(rule.substr(percentile ? 1 : 0));
+  fit.variation_percentile = percentile ? value : -1;
+  fit.variation_threshold = value;
+}
+
+std::string check_variation_rule(const std::string& rule) {
+  try {
+    std::size_t used = 0;
+    const bool percentile = !rule.empty() && rule[0] == 'p';
+    const double value = std::stod(rule.substr(percentile ? 1 : 0), &used);
+    if (used + (percentile ? 1 : 0) == rule.size() && value >= 0 && (!percentile || value <= 100)) return {};
+  } catch (const std::exception&) {
+  }
+  return "expected a sigma threshold >= 0 (e.g. 0.3) or a percentile p0..p100 (e.g. p90), not '" + rule + "'";
+}
 
 int run_reconstruct(const ReconstructOptions& o) {
   ensure_not_input(o.output, o.input);
@@ -29,9 +52,13 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.columns = o.resolution[0];
   params.rows = o.resolution[1];
   params.spacing = o.spacing;
+  params.vertices = o.vertices;
+  params.adaptive = o.adaptive;
   params.max_gap = o.max_gap;
   params.fit.leaf_size = o.leaf_size;
   params.fit.neighbors = o.neighbors;
+  params.fit.variation_growth = o.variation_growth;
+  set_variation_rule(o.variation_threshold, params.fit);
   const auto start = std::chrono::steady_clock::now();
   ReconstructResult result;
   try {
@@ -43,7 +70,9 @@ int run_reconstruct(const ReconstructOptions& o) {
   if (result.mesh.triangles.empty())
     throw WorkFailed(o.input + ": every triangle is farther than --max-gap " + std::to_string(result.max_gap) +
                      " from the samples; nothing written");
-  write_soup(result.mesh, o.output);
+  WriteOptions write;
+  write.vertex_scalars.push_back({"surface_variation", result.vertex_variation});  // PLY only
+  write_soup(result.mesh, o.output, write);
 
   nlohmann::ordered_json json;
   json["input"] = o.input;
@@ -51,9 +80,17 @@ int run_reconstruct(const ReconstructOptions& o) {
   json["points"] = input.points.size();
   json["vertices"] = result.mesh.points.size();
   json["faces"] = result.mesh.triangles.size();
+  json["grid"] = {{"columns", result.columns}, {"rows", result.rows}};
+  json["adaptive"] = o.adaptive;
   json["patches"] = result.patches;
   json["leaf_size"] = o.leaf_size;
   json["neighbors"] = o.neighbors;
+  json["variation"] = {{"rule", o.variation_threshold},
+                       {"threshold", result.variation_threshold},
+                       {"growth", o.variation_growth},
+                       {"grown_patches", result.grown_patches},
+                       {"patch_sigma", json_distribution(summarize(result.patch_variation))},
+                       {"vertex_sigma", json_distribution(summarize(result.vertex_variation))}};
   json["max_gap"] = result.max_gap;
   json["gap_faces_left_out"] = result.gap_triangles;
   json["reference_normal"] = {result.normal.x(), result.normal.y(), result.normal.z()};
@@ -74,20 +111,36 @@ Action add_reconstruct_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "reconstruct", "Scattered points (a height field over a disc-like domain) -> triangle mesh, by an RBF partition of unity");
   cmd->add_option("input", o->input, "Point set (.xyz)")->required();
-  cmd->add_option("-o,--output", o->output, "Surface mesh (.off .obj .ply .stl)")->required();
+  cmd->add_option("-o,--output", o->output, "Surface mesh (.off .obj .ply .stl; .ply also stores sigma per vertex)")->required();
   auto* resolution = cmd->add_option("--resolution", o->resolution, "Grid vertices along the footprint: NX NY")
                          ->expected(2)
                          ->check(CLI::Range(std::size_t(2), std::size_t(100000)))
                          ->capture_default_str();
-  cmd->add_option("--spacing", o->spacing, "Grid spacing in the reference plane (instead of --resolution)")
-      ->check(CLI::PositiveNumber)
-      ->excludes(resolution);
+  auto* spacing = cmd->add_option("--spacing", o->spacing, "Grid spacing in the reference plane (instead of --resolution)")
+                      ->check(CLI::PositiveNumber)
+                      ->excludes(resolution);
+  cmd->add_option("--vertices", o->vertices, "About this many grid vertices, on square cells (instead of --resolution)")
+      ->check(CLI::Range(std::size_t(4), std::size_t(100000000)))
+      ->excludes(resolution)
+      ->excludes(spacing);
   cmd->add_option("--leaf-size", o->leaf_size, "K: samples per k-d tree cell (one local patch each)")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
       ->capture_default_str();
   cmd->add_option("--neighbors", o->neighbors, "Samples interpolated by each cell's thin-plate patch")
       ->check(CLI::Range(std::size_t(3), std::size_t(1000)))
       ->capture_default_str();
+  cmd->add_option("--variation-threshold", o->variation_threshold,
+                  "Patches whose surface variation sigma exceeds this grow (more samples, larger support): a "
+                  "value (the paper's 0.3) or a percentile of the patches' sigma (p90)")
+      ->check(CLI::Validator(check_variation_rule, "T|pNN"))
+      ->capture_default_str();
+  cmd->add_option("--variation-growth", o->variation_growth,
+                  "Support radius factor of a grown patch (its samples grow by the square)")
+      ->check(CLI::Range(1.0, 4.0))
+      ->capture_default_str();
+  cmd->add_flag("--adaptive", o->adaptive,
+                 "Vertices dense where the surface bends, sparse where flat, for about the same face count "
+                 "(the twice finer grid simplified back by bending energy; slower)");
   cmd->add_option("--max-gap", o->max_gap,
                   "Leave out triangles farther than this from every sample (0 = 3x the median sample spacing)")
       ->check(CLI::NonNegativeNumber)

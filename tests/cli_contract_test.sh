@@ -209,6 +209,27 @@ expect_error "reconstruct too few points message" "few.xyz: .*30 points, at leas
 "$bin" reconstruct nan.xyz -o out/x.off > /dev/null 2> err.txt; check "reconstruct NaN" 2 $?
 expect_error "reconstruct NaN message" "nan.xyz"
 [ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct wrote on an error"; }
+"$bin" reconstruct terrain.xyz -o out/x.off --variation-threshold p101 > /dev/null 2> err.txt
+check "reconstruct bad variation threshold" 2 $?
+expect_error "reconstruct bad variation threshold message" "variation-threshold: expected .*p101"
+"$bin" reconstruct terrain.xyz -o out/x.off --vertices 900 --resolution 30 30 > /dev/null 2> err.txt
+check "reconstruct --vertices with --resolution" 2 $?
+[ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct wrote on a usage error"; }
+# sigma per vertex in the PLY; the percentile rule grows the patches above it; --vertices sizes the grid.
+"$bin" reconstruct terrain.xyz -o out/terrain.ply --vertices 900 --variation-threshold p50 --json out/rec2.json \
+  > /dev/null 2> err.txt
+check "reconstruct ply with sigma" 0 $?
+python3 -c "
+import json; j = json.load(open('out/rec2.json'))
+v = j['variation']; n = j['grid']['columns'] * j['grid']['rows']
+assert v['rule'] == 'p50' and 0 < v['grown_patches'] < j['patches'] and abs(n - 900) < 80, j
+assert v['patch_sigma']['min'] <= v['threshold'] <= v['patch_sigma']['max'], v
+lines = open('out/terrain.ply').read().split('\n')
+assert 'property double surface_variation' in lines, lines[:10]
+body = lines[lines.index('end_header') + 1:][:j['vertices']]
+sigma = [float(l.split()[3]) for l in body]
+assert len(sigma) == j['vertices'] and min(sigma) >= 0 and max(sigma) <= v['patch_sigma']['max'] + 1e-12, sigma[:5]" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct sigma in ply and json"; }
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

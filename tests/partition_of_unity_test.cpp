@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <filesystem>
@@ -104,6 +105,46 @@ TEST(PartitionOfUnity, ARotatedSampleReconstructsAsWellAsTheAxisAlignedOne) {
   EXPECT_LT(rotated, 1.5 * aligned + 1e-6);
 }
 
+TEST(PartitionOfUnity, GridEvaluationEqualsPointEvaluation) {
+  const PartitionOfUnity pu(sample(700, [](double x, double y) { return 0.2 * std::sin(3 * x) * std::cos(2 * y); }));
+  PlaneGrid grid;
+  grid.origin = pu.footprint().min() - Eigen::Vector2d(0.05, 0.03);  // a little beyond the footprint
+  grid.columns = 37;
+  grid.rows = 29;
+  grid.step = (pu.footprint().sizes() + Eigen::Vector2d(0.1, 0.06)).cwiseQuotient(Eigen::Vector2d(36, 28));
+  const std::vector<PartitionOfUnity::Value> values = pu.evaluate_grid(grid);
+  ASSERT_EQ(values.size(), 37u * 29u);
+  for (std::size_t j = 0; j < grid.rows; ++j)
+    for (std::size_t i = 0; i < grid.columns; ++i) {
+      const Eigen::Vector2d q = grid.at(i, j);
+      const PartitionOfUnity::Value point = pu.evaluate(q.x(), q.y()), gridded = values[j * grid.columns + i];
+      EXPECT_NEAR(gridded.height, point.height, 1e-12) << q.transpose();
+      EXPECT_NEAR(gridded.weight_sum, point.weight_sum, 1e-12);
+      EXPECT_NEAR(gridded.variation, point.variation, 1e-15);
+    }
+}
+
+TEST(PartitionOfUnity, SurfaceVariationIsZeroOnAPlaneAndDrivesTheGrowth) {
+  const PartitionOfUnity plane(sample(400, [](double x, double y) { return 0.3 * x - 0.2 * y; }, tilt()));
+  for (const double sigma : plane.patch_variation()) EXPECT_LT(sigma, 1e-12);
+  // A bump: sigma is high around it. The paper's fixed 0.3 never fires on a height field this
+  // gentle; the 75th percentile grows about a quarter of the patches, with more samples each.
+  auto bump = [](double x, double y) { return 0.3 * std::exp(-20 * (x * x + y * y)); };
+  PartitionOfUnityParams fixed;
+  fixed.variation_percentile = -1;
+  const PartitionOfUnity paper(sample(1500, bump), fixed);
+  EXPECT_EQ(paper.grown_patches(), 0u);
+  EXPECT_DOUBLE_EQ(paper.variation_threshold(), 0.3);
+  PartitionOfUnityParams adaptive;
+  adaptive.variation_percentile = 75;
+  const PartitionOfUnity grown(sample(1500, bump), adaptive);
+  const double share = static_cast<double>(grown.grown_patches()) / static_cast<double>(grown.patches());
+  EXPECT_GT(share, 0.2);
+  EXPECT_LE(share, 0.25);
+  EXPECT_GT(grown.evaluate(0.15, 0).variation, grown.evaluate(0.8, 0.8).variation);
+  EXPECT_LT(worst_error(grown, bump, Eigen::Matrix3d::Identity()), 0.01);
+}
+
 TEST(PartitionOfUnity, RefusesBadInput) {
   EXPECT_THROW(PartitionOfUnity(sample(10, [](double, double) { return 0.0; })), InvalidInput);  // < 40 points
   std::vector<Vec3> points = sample(100, [](double x, double) { return x; });
@@ -114,6 +155,9 @@ TEST(PartitionOfUnity, RefusesBadInput) {
   EXPECT_THROW(PartitionOfUnity{points}, InvalidInput);
   PartitionOfUnityParams bad;
   bad.enlargement = 1.0;
+  EXPECT_THROW(PartitionOfUnity(sample(100, [](double, double) { return 0.0; }), bad), InvalidInput);
+  bad = PartitionOfUnityParams();
+  bad.variation_percentile = 101;
   EXPECT_THROW(PartitionOfUnity(sample(100, [](double, double) { return 0.0; }), bad), InvalidInput);
 }
 
@@ -147,8 +191,9 @@ TEST(SharedPartitionOfUnity, JacksboroHeldOutPoints) {
   }
   EXPECT_EQ(count, 128632u);
   const double rms = std::sqrt(squared / static_cast<double>(count));
-  // Goal 18.7 m (the global thin-plate spline); the prototype measured 18.73 m.
-  EXPECT_LT(rms, 19.0) << rms;
+  // Goal 18.7 m (the global thin-plate spline). Measured 18.74 m with the default p90 growth,
+  // 18.77 m without it (bench/RESULTS.md): the bound fails if the growth stops helping.
+  EXPECT_LT(rms, 18.75) << rms;
   RecordProperty("rms_m", std::to_string(rms));
   std::cout << "jacksboro held-out RMS " << rms << " m\n";
 }
@@ -174,4 +219,50 @@ TEST(Reconstruct, AHoleInTheSampleStaysOpenAndTheMeshManifold) {
     EXPECT_GT((centre.head<2>() - Eigen::Vector2d(0.3, 0)).norm(), 0.35 - result.max_gap);
   }
   EXPECT_GT(result.normal.z(), 0.99);  // turned up: the faces face +z
+}
+
+TEST(Reconstruct, VerticesSetsTheGridSizeOnSquareCells) {
+  const std::vector<Vec3> points = sample(500, [](double x, double y) { return 0.1 * x * y; });
+  ReconstructParams params;
+  params.vertices = 2500;
+  const ReconstructResult result = reconstruct_surface(points, params);
+  EXPECT_NEAR(static_cast<double>(result.columns * result.rows), 2500.0, 2500.0 * 0.05);
+  EXPECT_EQ(result.vertex_variation.size(), result.mesh.points.size());
+}
+
+TEST(Reconstruct, TheSameResultOnOneThreadAsOnAll) {
+  const std::vector<Vec3> points = sample(2000, [](double x, double y) { return 0.2 * std::sin(4 * x * y); });
+  ReconstructParams params;
+  params.columns = params.rows = 60;
+  const ReconstructResult all = reconstruct_surface(points, params);
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  const ReconstructResult single = reconstruct_surface(points, params);
+  ASSERT_EQ(all.mesh.points.size(), single.mesh.points.size());
+  for (std::size_t v = 0; v < all.mesh.points.size(); ++v) EXPECT_EQ(all.mesh.points[v], single.mesh.points[v]);
+  EXPECT_EQ(all.mesh.triangles, single.mesh.triangles);
+  EXPECT_EQ(all.vertex_variation, single.vertex_variation);
+}
+
+TEST(Reconstruct, AdaptiveMeshIsDenserWhereTheSurfaceBends) {
+  // A sharp bump in the middle of a flat square: --adaptive keeps about the uniform grid's face
+  // count but puts more of its vertices on the bump, and is closer to the true surface there.
+  auto bump = [](double x, double y) { return 0.3 * std::exp(-30 * (x * x + y * y)); };
+  const std::vector<Vec3> points = sample(3000, bump);
+  ReconstructParams params;
+  params.columns = params.rows = 40;
+  const ReconstructResult uniform = reconstruct_surface(points, params);
+  params.adaptive = true;
+  const ReconstructResult adaptive = reconstruct_surface(points, params);
+  const QualityReport q = analyze_quality(adaptive.mesh);
+  EXPECT_TRUE(q.manifold);
+  EXPECT_EQ(q.self_intersections, 0u);
+  EXPECT_NEAR(static_cast<double>(adaptive.mesh.triangles.size()), static_cast<double>(uniform.mesh.triangles.size()),
+              0.05 * static_cast<double>(uniform.mesh.triangles.size()));
+  auto on_bump = [](const TriangleSoup& mesh) {
+    std::size_t count = 0;
+    for (const Vec3& p : mesh.points) count += p.head<2>().norm() < 0.4;
+    return static_cast<double>(count) / static_cast<double>(mesh.points.size());
+  };
+  EXPECT_GT(on_bump(adaptive.mesh), 1.5 * on_bump(uniform.mesh));
+  EXPECT_EQ(adaptive.vertex_variation.size(), adaptive.mesh.points.size());
 }

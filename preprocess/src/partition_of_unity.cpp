@@ -1,13 +1,15 @@
 #include "meshprep/preprocess/partition_of_unity.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/quality/statistics.h"
 
 #include <nanoflann.hpp>
-
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <string>
 
 namespace meshprep {
@@ -73,8 +75,10 @@ double wendland_weight(double r) {
 
 PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const PartitionOfUnityParams& params) {
   constexpr const char* who = "partition of unity";
-  if (params.leaf_size < 1 || !(params.enlargement > 1))
-    throw InvalidInput(std::string(who) + ": the leaf size must be at least 1 and the enlargement above 1");
+  if (params.leaf_size < 1 || !(params.enlargement > 1) || !(params.variation_growth >= 1) ||
+      !std::isfinite(params.variation_threshold) || !(params.variation_percentile <= 100))
+    throw InvalidInput(std::string(who) + ": the leaf size must be at least 1, the enlargement above 1, the variation "
+                                          "growth at least 1 and the percentile at most 100");
   if (points.size() < params.neighbors || params.neighbors < 3)
     throw InvalidInput(std::string(who) + ": " + std::to_string(points.size()) + " points, at least " +
                        std::to_string(std::max<std::size_t>(params.neighbors, 3)) + " needed");
@@ -104,27 +108,55 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   index_ = std::make_unique<Index>();
   index_->samples = std::make_unique<PlanarIndex>(std::move(planar));
   const PlanarIndex& samples = *index_->samples;
-  const std::vector<Vector2d>& sample_points = samples.points;
-  std::vector<Vector2d> centres;
-  const std::size_t k = params.neighbors;
-  std::vector<std::uint32_t> nearest(k);
-  std::vector<double> squared(k);
-  std::vector<Vector2d> sites(k);
-  Eigen::VectorXd values(static_cast<Eigen::Index>(k));
-  for (const Eigen::AlignedBox2d& cell : cells) {
-    const Vector2d centre = cell.center();
-    const double query[2] = {centre.x(), centre.y()};
-    samples.tree.knnSearch(query, k, nearest.data(), squared.data());
-    for (std::size_t j = 0; j < k; ++j) {
-      sites[j] = sample_points[nearest[j]];
-      values[static_cast<Eigen::Index>(j)] = heights[nearest[j]];
-    }
-    centres.push_back(centre);
-    radii_.push_back(std::max(params.enlargement * 0.5 * cell.diagonal().norm(), 1e-300));
-    largest_radius_ = std::max(largest_radius_, radii_.back());
-    fits_.emplace_back(sites, values, params.polynomial);
+  const std::size_t grown_count = std::min(
+      points.size(), static_cast<std::size_t>(std::ceil(static_cast<double>(params.neighbors) *
+                                                        params.variation_growth * params.variation_growth)));
+  centres_.resize(cells.size());
+  radii_.resize(cells.size());
+  variation_.resize(cells.size());
+  // Every patch is independent (its own slots): built in parallel, the same result on any thread count.
+  // First each cell's centre, support and sigma (PCA of the samples nearest to the centre)...
+  std::vector<std::vector<std::uint32_t>> nearest(cells.size());
+  tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t c) {
+    centres_[c] = cells[c].center();
+    radii_[c] = std::max(params.enlargement * 0.5 * cells[c].diagonal().norm(), 1e-300);
+    nearest[c].resize(params.neighbors);
+    std::vector<double> squared(params.neighbors);
+    nearest[c].resize(samples.tree.knnSearch(centres_[c].data(), params.neighbors, nearest[c].data(), squared.data()));
+    std::vector<Vec3> local;
+    for (const std::uint32_t s : nearest[c]) local.emplace_back(samples.points[s].x(), samples.points[s].y(), heights[s]);
+    variation_[c] = pca_frame(local).surface_variation();
+  });
+  threshold_ = params.variation_threshold;
+  if (params.variation_percentile >= 0) {
+    std::vector<double> sigma = variation_;
+    threshold_ = params.variation_percentile > 0 ? percentile(sigma, params.variation_percentile / 100)
+                                                 : *std::min_element(sigma.begin(), sigma.end());
   }
-  index_->centres = std::make_unique<PlanarIndex>(std::move(centres));
+  // ... then, where sigma is above the threshold, more samples and a larger support; the patches.
+  std::vector<char> grown(cells.size(), 0);
+  std::vector<std::optional<HeightMapSpline>> fits(cells.size());
+  tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t c) {
+    if (variation_[c] > threshold_ && grown_count > nearest[c].size()) {
+      nearest[c].resize(grown_count);
+      std::vector<double> squared(grown_count);
+      nearest[c].resize(samples.tree.knnSearch(centres_[c].data(), grown_count, nearest[c].data(), squared.data()));
+      radii_[c] *= params.variation_growth;
+      grown[c] = 1;
+    }
+    std::vector<Vector2d> sites;
+    Eigen::VectorXd values(static_cast<Eigen::Index>(nearest[c].size()));
+    for (const std::uint32_t s : nearest[c]) {
+      values[static_cast<Eigen::Index>(sites.size())] = heights[s];
+      sites.push_back(samples.points[s]);
+    }
+    fits[c].emplace(sites, values, params.polynomial);
+  });
+  fits_.reserve(cells.size());
+  for (std::optional<HeightMapSpline>& fit : fits) fits_.push_back(std::move(*fit));
+  grown_ = static_cast<std::size_t>(std::count(grown.begin(), grown.end(), 1));
+  largest_radius_ = *std::max_element(radii_.begin(), radii_.end());
+  index_->centres = std::make_unique<PlanarIndex>(centres_);
 }
 
 PartitionOfUnity::~PartitionOfUnity() = default;
@@ -164,16 +196,67 @@ PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {
   search.sorted = false;
   index_->centres->tree.radiusSearch(query, largest_radius_ * largest_radius_, within, search);
   std::sort(within.begin(), within.end());  // a fixed summation order: deterministic results
-  Value value;
-  double weighted = 0;
+  Value value;  // sums first, then divided
   for (const auto& [i, squared] : within) {
     const double w = wendland_weight(std::sqrt(squared) / radii_[i]);
     if (w <= 0) continue;
     value.weight_sum += w;
-    weighted += w * fits_[i].evaluate(x, y);
+    value.height += w * fits_[i].evaluate(x, y);
+    value.variation += w * variation_[i];
   }
-  if (value.weight_sum > 0) value.height = weighted / value.weight_sum;
+  if (value.weight_sum > 0) {
+    value.height /= value.weight_sum;
+    value.variation /= value.weight_sum;
+  }
   return value;
+}
+
+std::vector<PartitionOfUnity::Value> PartitionOfUnity::evaluate_grid(const PlaneGrid& grid) const {
+  // What one patch adds to the grid vertices inside its support.
+  struct Contribution {
+    std::vector<std::uint32_t> vertex;
+    Eigen::ArrayXd weight, value;
+  };
+  std::vector<Contribution> parts(patches());
+  const auto last_column = static_cast<double>(grid.columns) - 1, last_row = static_cast<double>(grid.rows) - 1;
+  tbb::parallel_for(std::size_t(0), patches(), [&](std::size_t p) {
+    const Vector2d low = (centres_[p] - Vector2d::Constant(radii_[p]) - grid.origin).cwiseQuotient(grid.step);
+    const Vector2d high = (centres_[p] + Vector2d::Constant(radii_[p]) - grid.origin).cwiseQuotient(grid.step);
+    const auto i0 = static_cast<std::size_t>(std::clamp(std::ceil(low.x()), 0.0, last_column + 1));
+    const auto i1 = static_cast<std::size_t>(std::clamp(std::floor(high.x()) + 1, 0.0, last_column + 1));
+    const auto j0 = static_cast<std::size_t>(std::clamp(std::ceil(low.y()), 0.0, last_row + 1));
+    const auto j1 = static_cast<std::size_t>(std::clamp(std::floor(high.y()) + 1, 0.0, last_row + 1));
+    std::vector<std::uint32_t>& vertex = parts[p].vertex;
+    std::vector<double> x, y, r;
+    for (std::size_t j = j0; j < j1; ++j)
+      for (std::size_t i = i0; i < i1; ++i) {
+        const Vector2d q = grid.at(i, j);
+        const double distance = (q - centres_[p]).norm() / radii_[p];
+        if (!(distance < 1)) continue;
+        vertex.push_back(static_cast<std::uint32_t>(j * grid.columns + i));
+        x.push_back(q.x());
+        y.push_back(q.y());
+        r.push_back(distance);
+      }
+    const auto n = static_cast<Eigen::Index>(vertex.size());
+    parts[p].value = fits_[p].evaluate(Eigen::Map<Eigen::ArrayXd>(x.data(), n), Eigen::Map<Eigen::ArrayXd>(y.data(), n));
+    parts[p].weight = Eigen::Map<Eigen::ArrayXd>(r.data(), n).unaryExpr([](double d) { return wendland_weight(d); });
+  });
+  std::vector<Value> values(grid.columns * grid.rows);  // sums first, then divided
+  for (std::size_t p = 0; p < parts.size(); ++p)  // in patch order: deterministic sums
+    for (std::size_t k = 0; k < parts[p].vertex.size(); ++k) {
+      Value& sum = values[parts[p].vertex[k]];
+      const double w = parts[p].weight[static_cast<Eigen::Index>(k)];
+      sum.weight_sum += w;
+      sum.height += w * parts[p].value[static_cast<Eigen::Index>(k)];
+      sum.variation += w * variation_[p];
+    }
+  for (Value& value : values)
+    if (value.weight_sum > 0) {
+      value.height /= value.weight_sum;
+      value.variation /= value.weight_sum;
+    }
+  return values;
 }
 
 }  // namespace meshprep

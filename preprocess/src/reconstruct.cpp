@@ -1,8 +1,7 @@
 #include "meshprep/preprocess/reconstruct.h"
 
 #include "meshprep/core/errors.h"
-
-#include <tbb/parallel_for.h>
+#include "meshprep/preprocess/simplify.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,19 +12,99 @@ namespace {
 
 using Eigen::Vector2d;
 
+// The grid's size: explicit columns and rows, a spacing, or about `vertices` vertices on square
+// cells over the footprint.
+PlaneGrid grid_over(const Eigen::AlignedBox2d& box, const ReconstructParams& params) {
+  std::size_t nx = params.columns, ny = params.rows;
+  const Vector2d size = box.sizes();
+  double spacing = params.spacing;
+  if (params.vertices > 0) {
+    if (!(size.minCoeff() > 0)) throw InvalidInput("the points lie on a line: no footprint to mesh");
+    spacing = std::sqrt(size.x() * size.y() / static_cast<double>(params.vertices));
+  }
+  if (spacing > 0) {
+    const Vector2d cells = size / spacing;
+    if (!(cells.maxCoeff() < 1e8)) throw InvalidInput("the spacing gives a grid of more than 10^8 vertices");
+    // A requested spacing is an upper bound (round up); a vertex count a target (round).
+    auto count = [&](double c) { return static_cast<std::size_t>(params.vertices > 0 ? std::round(c) : std::ceil(c)) + 1; };
+    nx = count(cells.x());
+    ny = count(cells.y());
+  }
+  if (nx < 2 || ny < 2 || static_cast<double>(nx) * static_cast<double>(ny) > 1e8)
+    throw InvalidInput("the grid needs between 2 x 2 and 10^8 vertices");
+  PlaneGrid grid;
+  grid.origin = box.min();
+  grid.columns = nx;
+  grid.rows = ny;
+  grid.step = Vector2d(size.x() / static_cast<double>(nx - 1), size.y() / static_cast<double>(ny - 1));
+  return grid;
+}
+
+// Two triangles per grid cell (i, j): k = 0 below the diagonal (i, j)-(i+1, j+1), k = 1 above.
+// Triangle index 2 (j (columns - 1) + i) + k; its centre is at (i + 2/3, j + 1/3) or
+// (i + 1/3, j + 2/3) grid steps from the origin.
+struct GridTriangles {
+  const PlaneGrid& grid;
+  std::size_t cells_x() const { return grid.columns - 1; }
+  std::size_t count() const { return 2 * cells_x() * (grid.rows - 1); }
+  Triangle corners(std::size_t t) const {
+    const std::size_t cell = t / 2, i = cell % cells_x(), j = cell / cells_x();
+    auto id = [&](std::size_t a, std::size_t b) { return static_cast<std::uint32_t>(b * grid.columns + a); };
+    return t % 2 == 0 ? Triangle{id(i, j), id(i + 1, j), id(i + 1, j + 1)} : Triangle{id(i, j), id(i + 1, j + 1), id(i, j + 1)};
+  }
+};
+
+// Marks the triangles whose centre lies within max_gap of a sample (in the plane): each sample
+// covers, row by row, an interval of centres. O(samples x rows of the disc), no per-triangle search.
+std::vector<char> near_samples(const std::vector<Vector2d>& samples, const PlaneGrid& grid, double max_gap) {
+  const GridTriangles triangles{grid};
+  std::vector<char> covered(triangles.count(), 0);
+  const double offsets[2][2] = {{2.0 / 3, 1.0 / 3}, {1.0 / 3, 2.0 / 3}};  // centre of triangle k in its cell
+  const auto rows = static_cast<long long>(grid.rows) - 1, columns = static_cast<long long>(grid.columns) - 1;
+  for (const Vector2d& s : samples) {
+    const Vector2d q = (s - grid.origin).cwiseQuotient(grid.step);
+    const Vector2d reach = Vector2d::Constant(max_gap).cwiseQuotient(grid.step);
+    for (int k = 0; k < 2; ++k) {
+      const long long j0 = std::max(0LL, static_cast<long long>(std::ceil(q.y() - reach.y() - offsets[k][1])));
+      const long long j1 = std::min(rows - 1, static_cast<long long>(std::floor(q.y() + reach.y() - offsets[k][1])));
+      for (long long j = j0; j <= j1; ++j) {
+        const double dy = (static_cast<double>(j) + offsets[k][1] - q.y()) * grid.step.y();
+        const double half = std::sqrt(std::max(0.0, max_gap * max_gap - dy * dy)) / grid.step.x();
+        const long long i0 = std::max(0LL, static_cast<long long>(std::ceil(q.x() - half - offsets[k][0])));
+        const long long i1 = std::min(columns - 1, static_cast<long long>(std::floor(q.x() + half - offsets[k][0])));
+        for (long long i = i0; i <= i1; ++i) covered[2 * static_cast<std::size_t>(j * columns + i) + k] = 1;
+      }
+    }
+  }
+  return covered;
+}
+
 // Leaving triangles out over gaps can leave two fans of triangles touching at one vertex (a
 // bow tie: not a manifold). At every such vertex the largest fan stays and the others go, until
-// none is left. Returns the number of triangles dropped.
-std::size_t drop_bowties(std::vector<Triangle>& triangles, std::size_t vertex_count) {
+// none is left; only the corners of left-out triangles can be such vertices. Returns the number
+// of triangles dropped.
+std::size_t drop_bowties(const std::vector<Triangle>& triangles, std::vector<char>& kept, std::size_t vertex_count) {
+  // Triangles around each vertex (compressed rows).
+  std::vector<std::uint32_t> first(vertex_count + 1, 0), around(3 * triangles.size());
+  for (const Triangle& t : triangles)
+    for (const std::uint32_t v : t) ++first[v + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (const std::uint32_t v : triangles[t]) around[fill[v]++] = static_cast<std::uint32_t>(t);
+
+  std::vector<std::uint32_t> suspects;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    if (!kept[t]) suspects.insert(suspects.end(), triangles[t].begin(), triangles[t].end());
   std::size_t dropped = 0;
-  for (bool changed = true; changed;) {
-    changed = false;
-    std::vector<std::vector<std::uint32_t>> around(vertex_count);
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-      for (const std::uint32_t v : triangles[t]) around[v].push_back(static_cast<std::uint32_t>(t));
-    std::vector<char> drop(triangles.size(), 0);
-    for (std::uint32_t v = 0; v < vertex_count; ++v) {
-      const std::vector<std::uint32_t>& fan = around[v];
+  while (!suspects.empty()) {
+    std::sort(suspects.begin(), suspects.end());
+    suspects.erase(std::unique(suspects.begin(), suspects.end()), suspects.end());
+    std::vector<std::uint32_t> next;
+    for (const std::uint32_t v : suspects) {
+      std::vector<std::uint32_t> fan;
+      for (std::uint32_t k = first[v]; k < first[v + 1]; ++k)
+        if (kept[around[k]]) fan.push_back(around[k]);
       if (fan.size() < 2) continue;
       // Group the triangles at v: two are in one fan if they share an edge at v.
       std::vector<std::size_t> group(fan.size());
@@ -43,21 +122,35 @@ std::size_t drop_bowties(std::vector<Triangle>& triangles, std::size_t vertex_co
         }
       std::vector<std::size_t> size(fan.size(), 0);
       for (std::size_t a = 0; a < fan.size(); ++a) ++size[root(a)];
-      const std::size_t largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
+      const auto largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
       if (size[largest] == fan.size()) continue;
       for (std::size_t a = 0; a < fan.size(); ++a)
-        if (root(a) != largest && !drop[fan[a]]) {
-          drop[fan[a]] = 1;
+        if (root(a) != largest) {
+          kept[fan[a]] = 0;
           ++dropped;
-          changed = true;
+          next.insert(next.end(), triangles[fan[a]].begin(), triangles[fan[a]].end());
         }
     }
-    std::vector<Triangle> kept;
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-      if (!drop[t]) kept.push_back(triangles[t]);
-    triangles.swap(kept);
+    suspects.swap(next);
   }
   return dropped;
+}
+
+// --adaptive: the mesh of the twice finer grid (four times the faces) simplified back to the
+// uniform mesh's size by bending-energy edge collapse (simplify.h), so vertices stay dense where
+// the surface bends (high sigma, high curvature) and thin out where it is flat, for the same face
+// budget. Boundary vertices are pinned by the simplifier, so the rim keeps the fine spacing.
+void adapt_to_features(const PartitionOfUnity& pu, ReconstructResult& result) {
+  TriMesh mesh = mesh_from_soup(result.mesh);  // manifold by construction (bow ties dropped)
+  SimplifyParams simplify_params;
+  simplify_params.keep_ratio = 0.25;
+  simplify(mesh, simplify_params);
+  result.mesh = soup_from_mesh(mesh);
+  result.vertex_variation.clear();
+  for (const Vec3& p : result.mesh.points) {
+    const Vec3 local = pu.frame().to_local(p);
+    result.vertex_variation.push_back(pu.evaluate(local.x(), local.y()).variation);
+  }
 }
 
 }  // namespace
@@ -66,62 +159,53 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
   const PartitionOfUnity pu(points, params.fit);
   ReconstructResult result;
   result.patches = pu.patches();
+  result.variation_threshold = pu.variation_threshold();
+  result.grown_patches = pu.grown_patches();
+  result.patch_variation = pu.patch_variation();
   result.normal = pu.frame().normal();
   result.max_gap = params.max_gap > 0 ? params.max_gap : 3.0 * pu.median_sample_spacing();
 
-  const Eigen::AlignedBox2d box = pu.footprint();
-  std::size_t nx = params.columns, ny = params.rows;
-  if (params.spacing > 0) {
-    const Vector2d cells = box.sizes() / params.spacing;
-    if (!(cells.maxCoeff() < 1e8)) throw InvalidInput("the spacing gives a grid of more than 10^8 vertices");
-    nx = static_cast<std::size_t>(std::ceil(cells.x())) + 1;
-    ny = static_cast<std::size_t>(std::ceil(cells.y())) + 1;
+  PlaneGrid grid = grid_over(pu.footprint(), params);
+  result.columns = grid.columns;
+  result.rows = grid.rows;
+  if (params.adaptive) {  // twice as fine along each axis, then simplified back (below)
+    grid.columns = 2 * grid.columns - 1;
+    grid.rows = 2 * grid.rows - 1;
+    grid.step /= 2;
   }
-  if (nx < 2 || ny < 2 || static_cast<double>(nx) * static_cast<double>(ny) > 1e8)
-    throw InvalidInput("the grid needs between 2 x 2 and 10^8 vertices");
-  const Vector2d step(box.sizes().x() / static_cast<double>(nx - 1), box.sizes().y() / static_cast<double>(ny - 1));
-  std::vector<Vec3> vertices(nx * ny);
-  // Every vertex is independent: evaluated in parallel, each written to its own slot (deterministic).
-  tbb::parallel_for(std::size_t(0), ny, [&](std::size_t j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      const Vector2d q = box.min() + Vector2d(static_cast<double>(i) * step.x(), static_cast<double>(j) * step.y());
-      vertices[j * nx + i] = pu.surface_point(q.x(), q.y());
-    }
-  });
+  const std::vector<PartitionOfUnity::Value> heights = pu.evaluate_grid(grid);
 
-  std::vector<char> used(vertices.size(), 0);
-  std::vector<Triangle> triangles;
-  auto id = [nx](std::size_t i, std::size_t j) { return static_cast<std::uint32_t>(j * nx + i); };
-  for (std::size_t j = 0; j + 1 < ny; ++j)
-    for (std::size_t i = 0; i + 1 < nx; ++i) {
-      const Vector2d corner = box.min() + Vector2d(static_cast<double>(i) * step.x(), static_cast<double>(j) * step.y());
-      const Vector2d centres[2] = {corner + Vector2d(2 * step.x(), step.y()) / 3.0,
-                                   corner + Vector2d(step.x(), 2 * step.y()) / 3.0};
-      const Triangle cell[2] = {{id(i, j), id(i + 1, j), id(i + 1, j + 1)}, {id(i, j), id(i + 1, j + 1), id(i, j + 1)}};
-      for (int k = 0; k < 2; ++k) {
-        if (pu.nearest_sample_distance(centres[k].x(), centres[k].y()) > result.max_gap) {
-          ++result.gap_triangles;
-          continue;
-        }
-        triangles.push_back(cell[k]);
-        for (const std::uint32_t v : cell[k]) used[v] = 1;
-      }
+  std::vector<Vector2d> planar(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) planar[i] = pu.frame().to_local(points[i]).head<2>();
+  const GridTriangles cells{grid};
+  std::vector<Triangle> triangles(cells.count());
+  for (std::size_t t = 0; t < triangles.size(); ++t) triangles[t] = cells.corners(t);
+  std::vector<char> kept = near_samples(planar, grid, result.max_gap);
+  result.gap_triangles = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 0));
+  result.gap_triangles += drop_bowties(triangles, kept, heights.size());
+
+  // Keep the vertices some triangle uses, in grid order.
+  constexpr std::uint32_t unused = ~std::uint32_t(0);
+  std::vector<std::uint32_t> renumber(heights.size(), unused);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    if (kept[t])
+      for (const std::uint32_t v : triangles[t]) renumber[v] = 0;
+  for (std::size_t j = 0; j < grid.rows; ++j)
+    for (std::size_t i = 0; i < grid.columns; ++i) {
+      const std::size_t v = j * grid.columns + i;
+      if (renumber[v] == unused) continue;
+      renumber[v] = static_cast<std::uint32_t>(result.mesh.points.size());
+      const Vector2d q = grid.at(i, j);
+      result.mesh.points.push_back(pu.frame().to_world(Vec3(q.x(), q.y(), heights[v].height)));
+      result.vertex_variation.push_back(heights[v].variation);
     }
-  result.gap_triangles += drop_bowties(triangles, vertices.size());
-  std::fill(used.begin(), used.end(), 0);
-  for (const Triangle& t : triangles)
-    for (const std::uint32_t v : t) used[v] = 1;
-  // Keep the vertices some triangle uses, in order.
-  std::vector<std::uint32_t> renumber(vertices.size(), 0);
-  for (std::size_t v = 0; v < vertices.size(); ++v) {
-    if (!used[v]) continue;
-    renumber[v] = static_cast<std::uint32_t>(result.mesh.points.size());
-    result.mesh.points.push_back(vertices[v]);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (!kept[t]) continue;
+    Triangle corners = triangles[t];
+    for (std::uint32_t& v : corners) v = renumber[v];
+    result.mesh.triangles.push_back(corners);
   }
-  for (Triangle t : triangles) {
-    for (std::uint32_t& v : t) v = renumber[v];
-    result.mesh.triangles.push_back(t);
-  }
+  if (params.adaptive) adapt_to_features(pu, result);
   return result;
 }
 

@@ -18,20 +18,30 @@ struct ReconstructParams {
   PartitionOfUnityParams fit;
   std::size_t columns = 300, rows = 300;  ///< grid vertices along the footprint's x and y
   double spacing = 0;  ///< > 0: grid spacing in the plane instead of columns and rows
+  std::size_t vertices = 0;  ///< > 0: about this many grid vertices on square cells (overrides the above)
   /// Largest distance from a triangle's centre to the nearest sample (in the plane); <= 0 = 3 x
   /// the median distance between a sample and its nearest neighbour.
   double max_gap = 0;
+  /// Adaptive remeshing by local features (the paper's stated next step): vertices dense where
+  /// sigma and curvature are high, sparse where the surface is flat, for about the same number of
+  /// faces as the uniform grid. Built by simplifying the twice finer grid (reconstruct.cpp).
+  bool adaptive = false;
 };
 
 struct ReconstructResult {
   TriangleSoup mesh;
   std::size_t patches = 0;
   double max_gap = 0;            ///< the value used
+  std::size_t columns = 0, rows = 0;  ///< the (uniform) grid's vertices along x and y
   std::size_t gap_triangles = 0;  ///< left out: over a gap, or touching the rest at a vertex only
   Vec3 normal = Vec3::UnitZ();    ///< of the reference plane (the PCA frame of the points)
+  double variation_threshold = 0;  ///< the sigma threshold applied
+  std::size_t grown_patches = 0;  ///< patches whose support grew (sigma above the threshold)
+  std::vector<double> patch_variation;   ///< sigma of each patch
+  std::vector<double> vertex_variation;  ///< sigma at each mesh vertex (the patches' sigma, blended)
 };
 
-/// \throws InvalidInput as PartitionOfUnity, or if the grid has fewer than 2 x 2 vertices or more
+/// \throws InvalidInput as PartitionOfUnity, if --vertices is given for points on a line, or if the grid has fewer than 2 x 2 vertices or more
 ///         than 10^8.
 ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const ReconstructParams& params = {});
 
