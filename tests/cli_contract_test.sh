@@ -208,6 +208,12 @@ expect_error "reconstruct too few points message" "few.xyz: .*30 points, at leas
 (head -5 terrain.xyz; echo "1 2 nan"; tail -100 terrain.xyz) > nan.xyz
 "$bin" reconstruct nan.xyz -o out/x.off > /dev/null 2> err.txt; check "reconstruct NaN" 2 $?
 expect_error "reconstruct NaN message" "nan.xyz"
+(cat terrain.xyz; sed -n 7p terrain.xyz) > duplicate.xyz
+"$bin" reconstruct duplicate.xyz -o out/x.off > /dev/null 2> err.txt; check "reconstruct duplicate point" 2 $?
+expect_error "reconstruct duplicate point message" "duplicate.xyz: .*points 7 and 401 .*same place"
+(for i in $(seq 1 60); do echo "$i $((2 * i)) $((3 * i))"; done) > line.xyz
+"$bin" reconstruct line.xyz -o out/x.off > /dev/null 2> err.txt; check "reconstruct collinear points" 2 $?
+expect_error "reconstruct collinear points message" "line.xyz: .*collinear"
 [ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct wrote on an error"; }
 "$bin" reconstruct terrain.xyz -o out/x.off --variation-threshold p101 > /dev/null 2> err.txt
 check "reconstruct bad variation threshold" 2 $?

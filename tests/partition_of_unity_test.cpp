@@ -150,6 +150,9 @@ TEST(PartitionOfUnity, RefusesBadInput) {
   std::vector<Vec3> points = sample(100, [](double x, double) { return x; });
   points[5] = points[6];  // two samples at the same place
   EXPECT_THROW(PartitionOfUnity{points}, InvalidInput);
+  points = sample(100, [](double, double) { return 0.0; });
+  points[5] = points[6] + Vec3(0, 0, 1);  // one above the other: not a height field
+  EXPECT_THROW(PartitionOfUnity{points}, InvalidInput);
   points = sample(100, [](double x, double) { return x; });
   points[3].x() = std::nan("");
   EXPECT_THROW(PartitionOfUnity{points}, InvalidInput);

@@ -108,6 +108,29 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   index_ = std::make_unique<Index>();
   index_->samples = std::make_unique<PlanarIndex>(std::move(planar));
   const PlanarIndex& samples = *index_->samples;
+  // Each sample's distance to its nearest neighbour in the plane. A height field has one height
+  // per place: a sample within 1/10 of the height difference from its nearest neighbour (a
+  // duplicate, or a wall steeper than 10:1, which the PCA plane, tilted by it, does not separate)
+  // is refused, the pair named by input position.
+  std::vector<double> spacing(points.size());
+  std::vector<std::uint32_t> nearest_sample(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    std::uint32_t index[2];
+    double squared[2];
+    samples.tree.knnSearch(samples.points[i].data(), 2, index, squared);
+    spacing[i] = std::sqrt(squared[1]);
+    nearest_sample[i] = index[0] == i ? index[1] : index[0];
+  });
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (spacing[i] <= 0.1 * std::abs(heights[i] - heights[nearest_sample[i]]) || spacing[i] == 0) {
+      const std::size_t a = std::min<std::size_t>(i, nearest_sample[i]), b = std::max<std::size_t>(i, nearest_sample[i]);
+      throw InvalidInput(std::string(who) + ": points " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                         " (in input order) lie at the same place of the reference plane, or one above the other "
+                         "(a height field has one height per place)");
+    }
+  const auto middle = spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2);
+  std::nth_element(spacing.begin(), middle, spacing.end());
+  median_spacing_ = *middle;
   const std::size_t grown_count = std::min(
       points.size(), static_cast<std::size_t>(std::ceil(static_cast<double>(params.neighbors) *
                                                         params.variation_growth * params.variation_growth)));
@@ -173,20 +196,7 @@ double PartitionOfUnity::nearest_sample_distance(double x, double y) const {
   return std::sqrt(squared);
 }
 
-double PartitionOfUnity::median_sample_spacing() const {
-  std::vector<double> spacing;
-  spacing.reserve(index_->samples->points.size());
-  std::uint32_t index[2];
-  double squared[2];
-  for (const Vector2d& p : index_->samples->points) {
-    const double query[2] = {p.x(), p.y()};
-    index_->samples->tree.knnSearch(query, 2, index, squared);
-    spacing.push_back(std::sqrt(squared[1]));
-  }
-  const auto middle = spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2);
-  std::nth_element(spacing.begin(), middle, spacing.end());
-  return *middle;
-}
+double PartitionOfUnity::median_sample_spacing() const { return median_spacing_; }
 
 PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {
   const double query[2] = {x, y};

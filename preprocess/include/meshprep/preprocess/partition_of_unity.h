@@ -59,8 +59,9 @@ double wendland_weight(double r);
 class PartitionOfUnity {
  public:
   /// \throws InvalidInput if a coordinate is not finite, there are fewer points than
-  ///         params.neighbors, the parameters are out of range, or a patch cannot be built (two
-  ///         samples at the same (x, y) in the plane, all samples of a patch collinear).
+  ///         params.neighbors, the parameters are out of range, two samples lie at the same (x, y)
+  ///         of the plane (named by their input positions), or a patch cannot be built (all its
+  ///         samples collinear).
   explicit PartitionOfUnity(const std::vector<Vec3>& points, const PartitionOfUnityParams& params = {});
   ~PartitionOfUnity();
   PartitionOfUnity(PartitionOfUnity&&) noexcept;
@@ -104,6 +105,7 @@ class PartitionOfUnity {
   std::vector<double> radii_, variation_;
   std::vector<HeightMapSpline> fits_;
   std::size_t grown_ = 0;
+  double median_spacing_ = 0;
   double threshold_ = 0;
   double largest_radius_ = 0;
   std::unique_ptr<Index> index_;  // k-d trees over the samples and the cell centres
