@@ -167,6 +167,29 @@ TEST(HeightMapSpline, QuadraticPolynomialReproducesAQuadric) {
   EXPECT_GT(HeightMapSpline(sites, heights).bending_energy(), 1.0);
 }
 
+TEST(HeightMapSpline, SmoothingSplineKeepsQuadricsAndStopsInterpolatingNoise) {
+  const std::vector<Eigen::Vector2d> sites = scattered_sites(30);
+  auto quadric = [](double x, double y) { return 0.2 - x + 0.5 * y + 0.7 * x * x - 0.3 * x * y + 1.1 * y * y; };
+  Eigen::VectorXd heights(30), noisy(30);
+  for (Eigen::Index i = 0; i < 30; ++i) {
+    heights[i] = quadric(sites[static_cast<std::size_t>(i)].x(), sites[static_cast<std::size_t>(i)].y());
+    noisy[i] = heights[i] + 0.01 * (i % 2 == 0 ? 1 : -1);
+  }
+  for (const double lambda : {0.1, 1.0, std::numeric_limits<double>::infinity()}) {
+    // Any lambda: the quadric is in the polynomial part, which the penalty does not touch.
+    const HeightMapSpline exact(sites, heights, HeightMapPolynomial::quadratic, lambda);
+    EXPECT_NEAR(exact.evaluate(0.3, -0.4), quadric(0.3, -0.4), 1e-10) << lambda;
+    // Noise is no longer interpolated: the sites' residuals are of the noise's size.
+    const HeightMapSpline smooth(sites, noisy, HeightMapPolynomial::quadratic, lambda);
+    const Eigen::Vector2d& s = sites[3];
+    EXPECT_GT(std::abs(smooth.evaluate(s.x(), s.y()) - noisy[3]), 1e-3) << lambda;
+  }
+  // lambda = 0 interpolates.
+  const HeightMapSpline interpolant(sites, noisy, HeightMapPolynomial::quadratic, 0.0);
+  EXPECT_NEAR(interpolant.evaluate(sites[3].x(), sites[3].y()), noisy[3], 1e-10);
+  EXPECT_THROW(HeightMapSpline(sites, noisy, HeightMapPolynomial::quadratic, -1.0), InvalidInput);
+}
+
 TEST(HeightMapSpline, EnergyIsTheThinPlateIntegral) {
   // J = integral over R^2 of z_xx^2 + 2 z_xy^2 + z_yy^2, by finite differences on a grid that is
   // fine near the sites and coarse far away (the integrand decays as 1/r^4).

@@ -1,27 +1,40 @@
 #include "meshprep/preprocess/local_height_map.h"
 
 namespace meshprep {
+namespace {
 
-LocalSurfacePoint fit_local_surface(const std::vector<Vec3>& neighbours, const Vec3& x,
-                                    HeightMapPolynomial polynomial) {
-  LocalSurfacePoint result;
-  result.frame = pca_frame(neighbours);
-  result.surface_variation = result.frame.surface_variation();
-
+HeightMapSpline height_map_in(const LocalFrame& frame, const std::vector<Vec3>& neighbours,
+                              HeightMapPolynomial polynomial, double smoothing) {
   std::vector<Eigen::Vector2d> sites;
   sites.reserve(neighbours.size());
   Eigen::VectorXd heights(static_cast<Eigen::Index>(neighbours.size()));
   for (std::size_t j = 0; j < neighbours.size(); ++j) {
-    const Vec3 local = result.frame.to_local(neighbours[j]);
+    const Vec3 local = frame.to_local(neighbours[j]);
     sites.emplace_back(local.x(), local.y());
     heights[static_cast<Eigen::Index>(j)] = local.z();
   }
-  const HeightMapSpline height_map(sites, heights, polynomial);
-  result.bending_energy = height_map.bending_energy();
+  return HeightMapSpline(sites, heights, polynomial, smoothing);
+}
 
-  Vec3 local = result.frame.to_local(x);
-  local.z() = height_map.evaluate(local.x(), local.y());
-  result.point = result.frame.to_world(local);
+}  // namespace
+
+LocalHeightMap::LocalHeightMap(const std::vector<Vec3>& neighbours, HeightMapPolynomial polynomial, double smoothing)
+    : frame_(pca_frame(neighbours)), spline_(height_map_in(frame_, neighbours, polynomial, smoothing)) {}
+
+Vec3 LocalHeightMap::project(const Vec3& x) const {
+  Vec3 local = frame_.to_local(x);
+  local.z() = spline_.evaluate(local.x(), local.y());
+  return frame_.to_world(local);
+}
+
+LocalSurfacePoint fit_local_surface(const std::vector<Vec3>& neighbours, const Vec3& x,
+                                    HeightMapPolynomial polynomial, double smoothing) {
+  const LocalHeightMap map(neighbours, polynomial, smoothing);
+  LocalSurfacePoint result;
+  result.frame = map.frame();
+  result.surface_variation = result.frame.surface_variation();
+  result.bending_energy = map.spline().bending_energy();
+  result.point = map.project(x);
   return result;
 }
 

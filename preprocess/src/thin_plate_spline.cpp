@@ -194,18 +194,31 @@ Eigen::MatrixXd volume_spline_energy_matrix(const std::vector<Vec3>& centres) {
 }
 
 HeightMapSpline::HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
-                                 HeightMapPolynomial polynomial) {
+                                 HeightMapPolynomial polynomial, double smoothing) {
   constexpr const char* who = "HeightMapSpline";
   const Index terms = term_count(polynomial);
   check_count(sites.size(), static_cast<std::size_t>(terms), who);
   check_values(heights, sites.size(), who);
+  if (!(smoothing >= 0)) throw InvalidInput(std::string(who) + ": smoothing must be >= 0");
   UnitCentres<2> unit = unit_centres(sites, who);
-  const BorderedSystem system(kernel_matrix(unit.points, thin_plate_kernel, who),
+  centre_ = unit.centre;
+  scale_ = unit.scale;
+  if (std::isinf(smoothing)) {  // the limit: the least-squares polynomial, no kernel part
+    Eigen::CompleteOrthogonalDecomposition<MatrixXd> fit(height_map_polynomial_matrix(unit.points, terms));
+    fit.setThreshold(kRankThreshold);
+    if (fit.rank() < terms)
+      throw InvalidInput(std::string(who) + ": the points are " +
+                         (polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic"));
+    polynomial_ = fit.solve(heights);
+    scaled_sites_.resize(2, 0);
+    return;
+  }
+  MatrixXd kernel = kernel_matrix(unit.points, thin_plate_kernel, who);
+  kernel.diagonal().array() += smoothing;
+  const BorderedSystem system(std::move(kernel),
                               height_map_polynomial_matrix(unit.points, terms), 1.0, terms,
                               polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic", who);
   const BorderedSystem::Solution s = system.solve(heights);
-  centre_ = unit.centre;
-  scale_ = unit.scale;
   scaled_sites_ = std::move(unit.points);
   gamma_ = s.gamma;
   polynomial_ = s.polynomial;

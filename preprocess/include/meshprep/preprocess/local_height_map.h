@@ -25,6 +25,23 @@
 
 namespace meshprep {
 
+/// Steps 1-3 above for a neighbourhood: its frame and height map, to project any point (step 4-5).
+class LocalHeightMap {
+ public:
+  /// \throws InvalidInput as HeightMapSpline on the neighbours' local (x, y). `smoothing`: see
+  ///         HeightMapSpline (0 interpolates the neighbours).
+  explicit LocalHeightMap(const std::vector<Vec3>& neighbours,
+                          HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0);
+  /// x moved along the frame normal onto the height map.
+  Vec3 project(const Vec3& x) const;
+  const LocalFrame& frame() const { return frame_; }
+  const HeightMapSpline& spline() const { return spline_; }
+
+ private:
+  LocalFrame frame_;
+  HeightMapSpline spline_;
+};
+
 /// The point on the local surface and what was measured on the way.
 struct LocalSurfacePoint {
   Vec3 point = Vec3::Zero();     ///< the query moved along the normal onto the height map
@@ -37,7 +54,7 @@ struct LocalSurfacePoint {
 /// few neighbours, two of them coinciding in the plane of the frame, collinear (or, quadratic,
 /// on one conic).
 LocalSurfacePoint fit_local_surface(const std::vector<Vec3>& neighbours, const Vec3& x,
-                                    HeightMapPolynomial polynomial = HeightMapPolynomial::linear);
+                                    HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0);
 
 /// fit_local_surface(neighbours, x, polynomial).point.
 Vec3 project_to_local_surface(const std::vector<Vec3>& neighbours, const Vec3& x,

@@ -84,15 +84,21 @@ enum class HeightMapPolynomial {
 /// quadratic height map with HeightMapPolynomial::quadratic).
 class HeightMapSpline {
  public:
+  /// `smoothing` lambda >= 0 makes it the thin-plate smoothing spline (Wahba): instead of
+  /// interpolating it minimises sum_j (z(S_j) - z_j)^2 + lambda/(8 pi) J(z) in the unit-scaled
+  /// coordinates, i.e. solves (A + lambda I) gamma + B v = h; lambda -> infinity tends to the least
+  /// squares polynomial, which lambda = infinity gives directly (no kernel part, energy 0).
+  /// Planes (quadrics, with the quadratic polynomial) are still reproduced exactly, whatever
+  /// lambda. bending_energy() then includes lambda |gamma|^2.
   /// \throws InvalidInput if there are fewer sites than polynomial terms, heights.size() differs,
   ///         a value is not finite, two sites coincide, or the sites are collinear (linear) or on
   ///         one conic (quadratic).
   HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
-                  HeightMapPolynomial polynomial = HeightMapPolynomial::linear);
+                  HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0);
 
   double evaluate(double x, double y) const;
-  /// z at the points (x[i], y[i]), vectorised (one SIMD log per site and point pair): the fast
-  /// path for many points. Equal to evaluate() up to round-off.
+  /// z at the points (x[i], y[i]): the fast path for many points (no per-call set-up). Equal to
+  /// evaluate() up to round-off.
   Eigen::ArrayXd evaluate(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y) const;
   /// 8 pi gamma^T A gamma >= 0. With the linear polynomial this is the thin-plate energy
   /// J(z) = integral of z_xx^2 + 2 z_xy^2 + z_yy^2 over R^2; with the quadratic one it is that of
