@@ -24,4 +24,23 @@ void ensure_not_input(const std::string& output, const std::string& input) {
     throw InvalidInput(output + ": output would overwrite the input file");
 }
 
+void require_manifold(const LoadedMesh& loaded, const std::string& path, const std::string& stage) {
+  const std::vector<std::size_t>& dropped = loaded.build.dropped_faces;
+  if (dropped.empty()) return;
+  throw InvalidInput(path + ": face " + std::to_string(dropped.front()) +
+                     (dropped.size() > 1 ? " and " + std::to_string(dropped.size() - 1) + " more" : std::string()) +
+                     " make an edge or vertex non-manifold; " + stage +
+                     " needs a manifold surface (see meshprep quality for the list)");
+}
+
+void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
+                              const std::string& what, const std::string& advice) {
+  if (output.self_intersections <= input_intersections) return;
+  throw WorkFailed(path + ": the " + what + " surface intersects itself at " +
+                   std::to_string(output.self_intersections - input_intersections) +
+                   " more face pairs than the input (first: faces " +
+                   std::to_string(output.self_intersecting_pairs.front().first) + " and " +
+                   std::to_string(output.self_intersecting_pairs.front().second) + "); nothing written. " + advice);
+}
+
 }  // namespace meshprep::cli

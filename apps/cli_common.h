@@ -1,6 +1,9 @@
 #pragma once
 // Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
 
+#include "meshprep/core/io.h"
+#include "meshprep/quality/report.h"
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -24,6 +27,15 @@ void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 /// \throws InvalidInput if `output` names the same file as `input` (outputs never clobber inputs).
 void ensure_not_input(const std::string& output, const std::string& input);
 
+/// \throws InvalidInput naming the first face OpenMesh could not add (a non-manifold edge or
+/// vertex): `stage` ("simplification", "smoothing") needs a manifold surface.
+void require_manifold(const LoadedMesh& loaded, const std::string& path, const std::string& stage);
+
+/// \throws WorkFailed if `output` (a report against the input) has more self-intersecting face
+/// pairs than the input had, naming the first pair and what to try instead.
+void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
+                              const std::string& what, const std::string& advice);
+
 /// A subcommand: registers its options on `app` and returns the action to run once parsed.
 using Action = std::function<int()>;
 
@@ -32,5 +44,6 @@ Action add_convert_command(CLI::App& app);
 Action add_tetrahedralize_command(CLI::App& app);
 Action add_simplify_command(CLI::App& app);
 Action add_reconstruct_command(CLI::App& app);
+Action add_smooth_command(CLI::App& app);
 
 }  // namespace meshprep::cli

@@ -44,13 +44,7 @@ int run_simplify(const SimplifyOptions& o) {
   ensure_not_input(o.json, o.input);
   if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
-  if (!loaded.build.dropped_faces.empty())
-    throw InvalidInput(o.input + ": face " + std::to_string(loaded.build.dropped_faces.front()) +
-                       (loaded.build.dropped_faces.size() > 1
-                            ? " and " + std::to_string(loaded.build.dropped_faces.size() - 1) + " more"
-                            : std::string()) +
-                       " make an edge or vertex non-manifold; simplification needs a manifold surface "
-                       "(see meshprep quality for the list)");
+  require_manifold(loaded, o.input, "simplification");
   SimplifyParams params;
   params.keep_ratio = o.ratio > 0 ? o.ratio : 1.0;
   params.target_faces = o.faces;
@@ -72,13 +66,8 @@ int run_simplify(const SimplifyOptions& o) {
   // The guards have kept every output measured free of new self-intersections, but they do not
   // test for them: the report does, and a surface that intersects itself is not written.
   const std::size_t input_intersections = input_topology["self_intersections"].get<std::size_t>();
-  if (quality.self_intersections > input_intersections)
-    throw WorkFailed(o.input + ": the simplified surface intersects itself at " +
-                     std::to_string(quality.self_intersections - input_intersections) +
-                     " more face pairs than the input (first: faces " +
-                     std::to_string(quality.self_intersecting_pairs.front().first) + " and " +
-                     std::to_string(quality.self_intersecting_pairs.front().second) +
-                     "); nothing written. Keep more faces (--ratio) or raise --min-angle");
+  refuse_new_intersections(quality, input_intersections, o.input, "simplified",
+                           "Keep more faces (--ratio) or raise --min-angle");
   write_soup(output, o.output);
   nlohmann::ordered_json json;
   json["input"] = o.input;

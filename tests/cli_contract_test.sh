@@ -188,6 +188,35 @@ expect_error "simplify non-manifold message" "fin.off: face 4 .*non-manifold"
 "$bin" simplify sphere.off -o out/x.off > /dev/null 2> err.txt; check "simplify without target" 2 $?
 [ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify wrote on a usage error"; }
 
+# smooth: a noisy sphere gets closer to the sphere; the baselines run; bad input is exit 2, nothing written.
+python3 - <<'PY'
+import math
+lines = open("sphere.off").read().split("\n")
+nv = int(lines[1].split()[0])
+out = lines[:2]
+for i in range(nv):
+    x, y, z = map(float, lines[2 + i].split())
+    s = 1 + 0.01 * (2 * math.fmod(0.5 + i * 0.6180339887498949, 1.0) - 1)
+    out.append("%r %r %r" % (s * x, s * y, s * z))
+out += lines[2 + nv:]
+open("noisy_sphere.off", "w").write("\n".join(out))
+PY
+"$bin" smooth noisy_sphere.off -o out/smooth.off --preserve-volume --json out/smooth.json > /dev/null 2> err.txt
+check "smooth" 0 $?
+python3 -c "
+import json; j = json.load(open('out/smooth.json'))
+assert j['method'] == 'rbf' and j['iterations'] == 2 and j['neighbors'] == 40, j
+assert abs(j['volume_change_relative']) < 1e-8 and j['quality']['self_intersections'] == 0, j
+assert j['quality']['closed'] and j['max_displacement'] > 0, j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: smooth json"; }
+"$bin" smooth noisy_sphere.off -o out/taubin.off --method taubin --iterations 5 > /dev/null 2> err.txt
+check "smooth taubin" 0 $?
+"$bin" smooth noisy_sphere.off -o out/x.off --method magic > /dev/null 2> err.txt; check "smooth unknown method" 2 $?
+"$bin" smooth noisy_sphere.off -o out/x.off --smoothing -1 > /dev/null 2> err.txt; check "smooth negative smoothing" 2 $?
+"$bin" smooth fin.off -o out/x.off > /dev/null 2> err.txt; check "smooth non-manifold input" 2 $?
+expect_error "smooth non-manifold message" "fin.off: face 4 .*non-manifold"
+[ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: smooth wrote on an error"; }
+
 # reconstruct: a height field from scattered points; bad point files are exit 2, nothing written.
 python3 -c "
 import math

@@ -16,37 +16,6 @@ namespace {
 // covariance of O(1) coordinates).
 constexpr double kRoundOff = 1e-12;
 
-// The surface of the cube [0, n]^3: n x n unit cells per side, two triangles each, the points on
-// edges and corners shared by the sides (orientation left inconsistent: sigma does not use it).
-TriangleSoup cube_surface(int n) {
-  TriangleSoup soup;
-  std::map<std::array<int, 3>, std::uint32_t> index;
-  const auto vertex = [&](const std::array<int, 3>& p) {
-    const auto [it, added] = index.try_emplace(p, static_cast<std::uint32_t>(soup.points.size()));
-    if (added) soup.points.emplace_back(p[0], p[1], p[2]);
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const int side : {0, n}) {
-      for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-          const auto corner = [&](int di, int dj) {
-            std::array<int, 3> p{};
-            p[axis] = side;
-            p[(axis + 1) % 3] = i + di;
-            p[(axis + 2) % 3] = j + dj;
-            return vertex(p);
-          };
-          const std::uint32_t a = corner(0, 0), b = corner(1, 0), c = corner(1, 1), d = corner(0, 1);
-          soup.triangles.push_back({a, b, c});
-          soup.triangles.push_back({a, c, d});
-        }
-      }
-    }
-  }
-  return soup;
-}
-
 std::uint32_t index_of(const TriangleSoup& soup, const Vec3& p) {
   return static_cast<std::uint32_t>(std::find(soup.points.begin(), soup.points.end(), p) - soup.points.begin());
 }
@@ -79,7 +48,7 @@ TEST(SurfaceVariation, IsSmallAndNearlyUniformOnASphere) {
 }
 
 TEST(SurfaceVariation, CornerAboveCreaseAboveFlatSide) {
-  const TriangleSoup cube = cube_surface(4);
+  const TriangleSoup cube = test::subdivided_cube(4);
   const std::vector<double> sigma = surface_variation(cube);
   const double corner = sigma[index_of(cube, Vec3(0, 0, 0))];
   const double crease = sigma[index_of(cube, Vec3(2, 0, 0))];

@@ -1,5 +1,6 @@
 #include "test_meshes.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -93,6 +94,38 @@ TriangleSoup merged(const TriangleSoup& a, const TriangleSoup& b) {
   s.points.insert(s.points.end(), b.points.begin(), b.points.end());
   for (Triangle t : b.triangles) s.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   return s;
+}
+
+TriangleSoup subdivided_cube(int n) {
+  TriangleSoup soup;
+  std::map<std::array<int, 3>, std::uint32_t> index;
+  const auto vertex = [&](const std::array<int, 3>& p) {
+    const auto [it, added] = index.try_emplace(p, static_cast<std::uint32_t>(soup.points.size()));
+    if (added) soup.points.emplace_back(p[0], p[1], p[2]);
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int side : {0, n})
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const auto corner = [&](int di, int dj) {
+            std::array<int, 3> p{};
+            p[axis] = side;
+            p[(axis + 1) % 3] = i + di;
+            p[(axis + 2) % 3] = j + dj;
+            return vertex(p);
+          };
+          // Counter-clockwise in (axis + 1, axis + 2) faces +axis: outward on the far side.
+          const std::uint32_t a = corner(0, 0), b = corner(1, 0), c = corner(1, 1), d = corner(0, 1);
+          if (side == n) {
+            soup.triangles.push_back({a, b, c});
+            soup.triangles.push_back({a, c, d});
+          } else {
+            soup.triangles.push_back({a, c, b});
+            soup.triangles.push_back({a, d, c});
+          }
+        }
+  return soup;
 }
 
 }  // namespace meshprep::test

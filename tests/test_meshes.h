@@ -20,6 +20,10 @@ TriangleSoup torus(int n, int m, double R = 2.0, double r = 0.5);
 /// Flat n x n grid of unit-square cells split into triangles in the plane z = z0 (open, one boundary loop).
 TriangleSoup grid(int n, double z0 = 0.0);
 
+/// The surface of the cube [0, n]^3: n x n unit cells per side, two triangles each, points on edges
+/// and corners shared by the sides, faces oriented outwards (closed, genus 0).
+TriangleSoup subdivided_cube(int n);
+
 /// `soup` translated by t.
 TriangleSoup translated(TriangleSoup soup, const Vec3& t);
 

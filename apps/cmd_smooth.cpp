@@ -1,0 +1,127 @@
+// meshprep smooth IN -o OUT [--method rbf|taubin|laplace] [--neighbors 11] [--iterations N]
+//   [--smoothing L] [--feature-angle DEG] [--preserve-volume] [--json FILE|-]
+#include "cli_common.h"
+#include "progress_bar.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+#include "meshprep/preprocess/smooth.h"
+#include "meshprep/quality/json_values.h"
+#include "meshprep/quality/report.h"
+#include "meshprep/quality/report_writers.h"
+#include "meshprep/quality/self_intersections.h"
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace meshprep::cli {
+namespace {
+
+const std::map<std::string, SmoothMethod> kMethods = {
+    {"rbf", SmoothMethod::Rbf}, {"taubin", SmoothMethod::Taubin}, {"laplace", SmoothMethod::Laplace}};
+
+struct SmoothOptions {
+  std::string input, output, json, method = "rbf";
+  SmoothParams params;
+};
+
+int run_smooth(SmoothOptions o) {
+  ensure_not_input(o.output, o.input);
+  ensure_not_input(o.json, o.input);
+  LoadedMesh loaded = load_mesh(o.input);
+  require_manifold(loaded, o.input, "smoothing");
+  o.params.method = kMethods.at(o.method);
+  ProgressBar bar("smooth");
+  o.params.progress = [&bar](double fraction) { bar.update(fraction); };
+  const SmoothResult result = smooth(loaded.mesh, o.params);
+  bar.finish();
+  const TriangleSoup output = soup_from_mesh(loaded.mesh);
+
+  QualityReport quality = analyze_quality(output, QualityParams(), &loaded.soup);
+  quality.path = o.output;
+  quality.reference->path = o.input;
+  const std::size_t input_intersections = find_self_intersections(loaded.soup).count;
+  refuse_new_intersections(quality, input_intersections, o.input, "smoothed", "Use fewer --iterations");
+  write_soup(output, o.output);
+
+  const QualityReport input_quality = analyze_quality(loaded.soup);
+  nlohmann::ordered_json json;
+  json["input"] = o.input;
+  json["output"] = o.output;
+  json["method"] = o.method;
+  json["iterations"] = result.iterations;
+  if (o.params.method == SmoothMethod::Rbf) {
+    json["neighbors"] = o.params.neighbors;
+    json["smoothing"] = o.params.smoothing;
+    json["feature_angle_deg"] = o.params.feature_angle_deg;
+    json["vertices_kept"] = {{"corners", result.corner_vertices},
+                             {"boundary", result.boundary_vertices},
+                             {"unfitted", result.unfitted_vertices},
+                             {"undone_for_self_intersections", result.undone_vertices}};
+    json["feature_line_vertices"] = result.feature_line_vertices;
+  }
+  json["preserve_volume"] = o.params.preserve_volume;
+  json["volume_before"] = result.volume_before ? json_number(*result.volume_before) : nullptr;
+  json["volume_after"] = result.volume_after ? json_number(*result.volume_after) : nullptr;
+  json["volume_change_relative"] =
+      result.volume_before ? json_number(*result.volume_after / *result.volume_before - 1) : nullptr;
+  json["max_displacement"] = result.max_displacement;
+  json["time_seconds"] = result.seconds;
+  json["input_radius_ratio"] = json_distribution(input_quality.radius_ratio);
+  json["input_self_intersections"] = input_intersections;
+  json["quality"] = to_json(quality);
+  if (!o.json.empty()) emit_json(json, o.json);
+  if (o.json != "-") {
+    std::cout << o.input << " -> " << o.output << ": " << o.method << ", " << result.iterations << " iteration(s) in "
+              << result.seconds << " s; moved at most " << result.max_displacement << ", Hausdorff to the input "
+              << quality.reference->hausdorff_relative << " of the diagonal";
+    if (result.volume_before) std::cout << ", volume change " << 100 * (*result.volume_after / *result.volume_before - 1) << " %";
+    std::cout << '\n';
+  }
+  if (o.params.preserve_volume && !result.volume_before)
+    std::cerr << "meshprep: warning: --preserve-volume ignored: the surface is not closed\n";
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_smooth_command(CLI::App& app) {
+  auto o = std::make_shared<SmoothOptions>();
+  CLI::App* cmd = app.add_subcommand("smooth", "Denoise a surface mesh, keeping its sharp features (RBF smoothing)");
+  cmd->add_option("input", o->input, "Surface mesh (manifold; closed or with boundaries)")->required();
+  cmd->add_option("-o,--output", o->output, "Smoothed surface (.off .obj .ply .stl)")->required();
+  cmd->add_option("--method", o->method,
+                  "rbf (the paper's: each vertex onto the local RBF surface of its neighbours on its side of "
+                  "any feature), taubin or laplace (baselines)")
+      ->check(CLI::IsMember({"rbf", "taubin", "laplace"}))
+      ->capture_default_str();
+  cmd->add_option("--iterations", o->params.iterations, "Smoothing iterations")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
+      ->capture_default_str();
+  cmd->add_option("--neighbors", o->params.neighbors, "rbf: neighbours of each vertex's local surface")
+      ->check(CLI::Range(std::size_t(8), std::size_t(200)))
+      ->capture_default_str();
+  cmd->add_option("--smoothing", o->params.smoothing,
+                  "rbf: lambda of the thin-plate smoothing spline (0 interpolates the neighbours)")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            try {
+              return std::stod(value) >= 0 ? std::string() : "must be >= 0 (or inf)";
+            } catch (const std::exception&) {
+              return "expected a number >= 0 or inf, not '" + value + "'";
+            }
+          },
+          "L|inf"))
+      ->capture_default_str();
+  cmd->add_option("--feature-angle", o->params.feature_angle_deg,
+                  "rbf: edges with a larger dihedral angle (degrees) are creases, kept sharp; 180 = none")
+      ->check(CLI::Range(1.0, 180.0))
+      ->capture_default_str();
+  cmd->add_flag("--preserve-volume", o->params.preserve_volume,
+                "Closed surfaces: offset the result along its normals so that the enclosed volume is unchanged");
+  cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
+  return [o] { return run_smooth(*o); };
+}
+
+}  // namespace meshprep::cli

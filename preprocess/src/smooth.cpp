@@ -1,0 +1,110 @@
+#include "meshprep/preprocess/smooth.h"
+
+#include "laplacian_smoothing.h"
+#include "rbf_smoothing.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/triangle_metrics.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace meshprep {
+namespace {
+
+bool closed(const TriMesh& mesh) {
+  for (const auto v : mesh.vertices())
+    if (mesh.is_boundary(v)) return false;
+  return mesh.n_faces() > 0;
+}
+
+double volume(const TriMesh& mesh) { return signed_volume(soup_from_mesh(mesh)); }
+
+// --preserve-volume: the enclosed volume V(t) of the surface offset by t along its (area-weighted)
+// vertex normals grows by about t x area; Newton steps on t bring it back to the input's volume
+// without moving any vertex relative to its neighbours (no noise comes back).
+void restore_volume(TriMesh& mesh, double target) {
+  mesh.request_vertex_normals();
+  for (int step = 0; step < 4; ++step) {
+    const double now = volume(mesh);
+    if (std::abs(now - target) <= 1e-9 * std::abs(target)) break;
+    mesh.update_face_normals();
+    mesh.update_vertex_normals();
+    double area = 0;
+    for (const auto f : mesh.faces()) area += mesh.calc_face_area(f);
+    const double sign = target > 0 ? 1.0 : -1.0;  // outward normals give a positive volume
+    const double offset = sign * (target - now) / area;
+    for (const auto v : mesh.vertices()) mesh.set_point(v, mesh.point(v) + offset * mesh.normal(v));
+  }
+  mesh.release_vertex_normals();
+}
+
+// A smoothing step must not make the surface cross itself: the vertices of faces that intersect
+// (beyond the pairs the input already had) go back to where the step found them, until none is
+// left. Returns the number of vertices put back.
+std::size_t undo_new_intersections(TriMesh& mesh, const std::vector<TriMesh::Point>& before, std::size_t allowed) {
+  std::size_t undone = 0;
+  for (int round = 0; round < 8; ++round) {
+    const TriangleSoup soup = soup_from_mesh(mesh);  // same vertex and face numbering (no deletions)
+    const SelfIntersections found = find_self_intersections(soup);
+    if (found.count <= allowed) break;
+    for (const auto& [a, b] : found.pairs)
+      for (const std::size_t f : {a, b})
+        for (const std::uint32_t v : soup.triangles[f]) {
+          const TriMesh::VertexHandle handle(static_cast<int>(v));
+          if (mesh.point(handle) == before[v]) continue;
+          mesh.set_point(handle, before[v]);
+          ++undone;
+        }
+  }
+  return undone;
+}
+
+}  // namespace
+
+SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
+  if (params.method == SmoothMethod::Rbf && params.neighbors < 8)
+    throw InvalidInput("smooth: at least 8 neighbours are needed (the local quadratic height map has 6 terms)");
+  if (!(params.smoothing >= 0) || !(params.feature_angle_deg > 0 && params.feature_angle_deg <= 180))
+    throw InvalidInput("smooth: the smoothing must be >= 0 and the feature angle in (0, 180] degrees");
+  const auto start = std::chrono::steady_clock::now();
+  SmoothResult result;
+  const std::vector<TriMesh::Point> before(mesh.points(), mesh.points() + mesh.n_vertices());
+  const bool keep_volume = params.preserve_volume && closed(mesh);
+  if (closed(mesh)) result.volume_before = volume(mesh);
+
+  if (params.method == SmoothMethod::Taubin) {
+    taubin_smooth(mesh, params.iterations);
+  } else if (params.method == SmoothMethod::Laplace) {
+    laplace_smooth(mesh, params.iterations);
+  } else {
+    const std::size_t input_intersections = find_self_intersections(soup_from_mesh(mesh)).count;
+    for (std::size_t i = 0; i < params.iterations; ++i) {
+      RbfIterationCounts counts;
+      const std::vector<TriMesh::Point> start_of_step(mesh.points(), mesh.points() + mesh.n_vertices());
+      const std::vector<Vec3> moved = rbf_smoothing_step(mesh, params, counts);
+      for (const auto v : mesh.vertices()) {
+        const Vec3& p = moved[static_cast<std::size_t>(v.idx())];
+        mesh.set_point(v, TriMesh::Point(p.x(), p.y(), p.z()));
+      }
+      result.undone_vertices += undo_new_intersections(mesh, start_of_step, input_intersections);
+      result.feature_line_vertices = counts.feature_line;
+      result.corner_vertices = counts.corners;
+      result.boundary_vertices = counts.boundary;
+      result.unfitted_vertices = counts.unfitted;
+      if (params.progress) params.progress(static_cast<double>(i + 1) / static_cast<double>(params.iterations));
+    }
+  }
+  result.iterations = params.iterations;
+  if (keep_volume) restore_volume(mesh, *result.volume_before);
+  if (result.volume_before) result.volume_after = volume(mesh);
+  for (const auto v : mesh.vertices())
+    result.max_displacement =
+        std::max(result.max_displacement, static_cast<double>((mesh.point(v) - before[static_cast<std::size_t>(v.idx())]).norm()));
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace meshprep

@@ -1,0 +1,164 @@
+#include "meshprep/core/errors.h"
+#include "meshprep/preprocess/smooth.h"
+#include "meshprep/quality/triangle_metrics.h"
+
+#include "test_meshes.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace meshprep;
+
+namespace {
+
+Vec3 at(const TriMesh& mesh, TriMesh::VertexHandle v) {
+  const TriMesh::Point& p = mesh.point(v);
+  return Vec3(p[0], p[1], p[2]);
+}
+
+double largest_move(const TriangleSoup& before, const TriMesh& after) {
+  double largest = 0;
+  for (const auto v : after.vertices())
+    largest = std::max(largest, (at(after, v) - before.points[static_cast<std::size_t>(v.idx())]).norm());
+  return largest;
+}
+
+// Deterministic noise in [-1, 1] (a low-discrepancy sequence).
+double noise(std::size_t i) { return 2 * std::fmod(0.5 + static_cast<double>(i) * 0.6180339887498949, 1.0) - 1; }
+
+// The unit icosphere with every vertex moved along its normal by amplitude x noise.
+TriangleSoup noisy_sphere(double amplitude) {
+  TriangleSoup sphere = test::icosphere(4);
+  for (std::size_t i = 0; i < sphere.points.size(); ++i) sphere.points[i] *= 1 + amplitude * noise(i);
+  return sphere;
+}
+
+double rms_radial_error(const TriMesh& mesh) {
+  double sum = 0;
+  for (const auto v : mesh.vertices()) sum += std::pow(at(mesh, v).norm() - 1, 2);
+  return std::sqrt(sum / static_cast<double>(mesh.n_vertices()));
+}
+
+}  // namespace
+
+TEST(Smooth, APlaneIsAFixedPoint) {
+  // A tilted, moved grid: every fit reproduces the plane, so nothing moves beyond round-off.
+  TriangleSoup plane = test::grid(12);
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.7, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+  for (Vec3& p : plane.points) p = tilt * p + Vec3(3, -1, 2);
+  TriMesh mesh = mesh_from_soup(plane);
+  smooth(mesh);
+  EXPECT_LT(largest_move(plane, mesh), 1e-12);
+}
+
+TEST(Smooth, ASphereIsAFixedPointUpToTheQuadricFit) {
+  // Each vertex's 3-ring (radius r ~ 0.23 on the level-4 unit icosphere) is a height map
+  // z = r^2/2 + r^4/8 + ...: the local quadric misses the quartic term, ~1e-4 at the rim and less
+  // at the centre, so a vertex may move by about that much, never by the edge length (0.077).
+  const TriangleSoup sphere = test::icosphere(4);
+  TriMesh mesh = mesh_from_soup(sphere);
+  SmoothParams one_step;
+  one_step.iterations = 1;
+  smooth(mesh, one_step);
+  EXPECT_LT(largest_move(sphere, mesh), 2e-4);
+  EXPECT_LT(rms_radial_error(mesh), 1e-4);
+}
+
+TEST(Smooth, CubeEdgesAndCornersStayPut) {
+  // Creases at 90 degrees: the sides are planes, a vertex on an edge is projected onto both of its
+  // sides' planes (it is on their intersection already), a corner stays.
+  const TriangleSoup cube = test::subdivided_cube(4);
+  TriMesh mesh = mesh_from_soup(cube);
+  SmoothParams params;
+  params.feature_angle_deg = 60;
+  const SmoothResult result = smooth(mesh, params);
+  EXPECT_LT(largest_move(cube, mesh), 1e-12);
+  EXPECT_EQ(result.corner_vertices, 8u);
+  EXPECT_EQ(result.feature_line_vertices, 12u * 3u);  // 3 inner vertices on each of the 12 edges
+  // Without features the edges are rounded off.
+  TriMesh rounded = mesh_from_soup(cube);
+  params.feature_angle_deg = 180;
+  smooth(rounded, params);
+  EXPECT_GT(largest_move(cube, rounded), 0.05);
+}
+
+TEST(Smooth, AnOpenDiskKeepsItsBoundaryAndLosesItsNoise) {
+  TriangleSoup disk = test::grid(16);
+  for (std::size_t i = 0; i < disk.points.size(); ++i) disk.points[i].z() += 0.02 * noise(i);
+  TriMesh mesh = mesh_from_soup(disk);
+  const SmoothResult result = smooth(mesh);
+  double before = 0, after = 0;
+  for (const auto v : mesh.vertices()) {
+    const Vec3& p = disk.points[static_cast<std::size_t>(v.idx())];
+    if (mesh.is_boundary(v)) {
+      EXPECT_EQ(at(mesh, v), p);
+      continue;
+    }
+    before += p.z() * p.z();
+    after += std::pow(at(mesh, v).z(), 2);
+  }
+  EXPECT_GT(result.boundary_vertices, 0u);
+  EXPECT_LT(after, 0.25 * before);  // noise amplitude at least halved inside
+}
+
+TEST(Smooth, NoiseOnASphereDecreasesOverTheFirstIterations) {
+  const TriangleSoup noisy = noisy_sphere(0.01);
+  double previous = rms_radial_error(mesh_from_soup(noisy));
+  for (std::size_t iterations = 1; iterations <= 3; ++iterations) {
+    TriMesh mesh = mesh_from_soup(noisy);
+    SmoothParams params;
+    params.iterations = iterations;
+    smooth(mesh, params);
+    const double now = rms_radial_error(mesh);
+    EXPECT_LT(now, previous) << iterations << " iterations";
+    previous = now;
+  }
+  EXPECT_LT(previous, 0.3 * 0.01 / std::sqrt(3.0));  // the noise's RMS is 0.01 / sqrt(3)
+}
+
+TEST(Smooth, PreserveVolumeKeepsTheEnclosedVolume) {
+  const TriangleSoup noisy = noisy_sphere(0.01);
+  TriMesh mesh = mesh_from_soup(noisy);
+  SmoothParams params;
+  params.preserve_volume = true;
+  const SmoothResult result = smooth(mesh, params);
+  ASSERT_TRUE(result.volume_before && result.volume_after);
+  EXPECT_NEAR(*result.volume_after / *result.volume_before, 1.0, 1e-8);
+  EXPECT_NEAR(*result.volume_before, signed_volume(noisy), 1e-12);
+}
+
+TEST(Smooth, TheSameResultOnOneThreadAsOnAll) {
+  const TriangleSoup noisy = noisy_sphere(0.01);
+  TriMesh all = mesh_from_soup(noisy), single = mesh_from_soup(noisy);
+  smooth(all);
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  smooth(single);
+  for (const auto v : all.vertices()) EXPECT_EQ(all.point(v), single.point(v));
+}
+
+TEST(Smooth, TheBaselinesSmoothToo) {
+  const TriangleSoup noisy = noisy_sphere(0.01);
+  const double before = rms_radial_error(mesh_from_soup(noisy));
+  for (const SmoothMethod method : {SmoothMethod::Taubin, SmoothMethod::Laplace}) {
+    TriMesh mesh = mesh_from_soup(noisy);
+    SmoothParams params;
+    params.method = method;
+    params.iterations = 3;
+    smooth(mesh, params);
+    EXPECT_LT(rms_radial_error(mesh), before);
+  }
+}
+
+TEST(Smooth, RefusesBadParameters) {
+  TriMesh mesh = mesh_from_soup(test::icosphere(1));
+  SmoothParams params;
+  params.neighbors = 5;
+  EXPECT_THROW(smooth(mesh, params), InvalidInput);
+  params = SmoothParams();
+  params.feature_angle_deg = 0;
+  EXPECT_THROW(smooth(mesh, params), InvalidInput);
+}
