@@ -41,23 +41,29 @@ std::vector<Vec3> filtered_face_normals(const TriMesh& mesh) {
     normals[i] = areas[i] > 0 ? Vec3(cross.normalized()) : Vec3::Zero();
     centroids[i] = (a + b + c) / 3;
   }
+  // The faces around each face (sharing a vertex), once for all rounds (compressed rows).
+  std::vector<std::size_t> first(n + 1, 0);
+  std::vector<int> around;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t begin = around.size();
+    for (const auto v : mesh.fv_range(TriMesh::FaceHandle(static_cast<int>(i))))
+      for (const auto g : mesh.vf_range(v))
+        if (std::find(around.begin() + static_cast<std::ptrdiff_t>(begin), around.end(), g.idx()) == around.end())
+          around.push_back(g.idx());
+    first[i + 1] = around.size();
+  }
   constexpr double kSigmaNormal = 0.35;
   constexpr int kIterations = 5;
   std::vector<Vec3> next(n);
   for (int iteration = 0; iteration < kIterations; ++iteration) {
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      const TriMesh::FaceHandle f(static_cast<int>(i));
       Vec3 sum = Vec3::Zero();
-      std::vector<int> seen;
-      for (const auto v : mesh.fv_range(f))
-        for (const auto g : mesh.vf_range(v)) {
-          if (std::find(seen.begin(), seen.end(), g.idx()) != seen.end()) continue;
-          seen.push_back(g.idx());
-          const auto j = static_cast<std::size_t>(g.idx());
-          const double dc = (centroids[j] - centroids[i]).norm() / sigma_centre;
-          const double dn = (normals[j] - normals[i]).norm() / kSigmaNormal;
-          sum += areas[j] * std::exp(-0.5 * (dc * dc + dn * dn)) * normals[j];
-        }
+      for (std::size_t k = first[i]; k < first[i + 1]; ++k) {
+        const auto j = static_cast<std::size_t>(around[k]);
+        const double dc = (centroids[j] - centroids[i]).norm() / sigma_centre;
+        const double dn = (normals[j] - normals[i]).norm() / kSigmaNormal;
+        sum += areas[j] * std::exp(-0.5 * (dc * dc + dn * dn)) * normals[j];
+      }
       next[i] = sum.norm() > 0 ? Vec3(sum.normalized()) : normals[i];
     });
     normals.swap(next);
