@@ -2,6 +2,7 @@
 //   [--leaf-size K] [--neighbors N] [--variation-threshold T|pNN] [--variation-growth G]
 //   [--adaptive] [--max-gap G] [--json FILE|-]
 #include "cli_common.h"
+#include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
@@ -59,6 +60,8 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.fit.neighbors = o.neighbors;
   params.fit.variation_growth = o.variation_growth;
   set_variation_rule(o.variation_threshold, params.fit);
+  ProgressBar bar("reconstruct");
+  params.progress = [&bar](double fraction) { bar.update(fraction); };
   const auto start = std::chrono::steady_clock::now();
   ReconstructResult result;
   try {
@@ -66,6 +69,7 @@ int run_reconstruct(const ReconstructOptions& o) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(o.input + ": " + e.what());
   }
+  bar.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.mesh.triangles.empty())
     throw WorkFailed(o.input + ": every triangle is farther than --max-gap " + std::to_string(result.max_gap) +

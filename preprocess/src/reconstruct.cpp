@@ -140,10 +140,11 @@ std::size_t drop_bowties(const std::vector<Triangle>& triangles, std::vector<cha
 // uniform mesh's size by bending-energy edge collapse (simplify.h), so vertices stay dense where
 // the surface bends (high sigma, high curvature) and thin out where it is flat, for the same face
 // budget. Boundary vertices are pinned by the simplifier, so the rim keeps the fine spacing.
-void adapt_to_features(const PartitionOfUnity& pu, ReconstructResult& result) {
+void adapt_to_features(const PartitionOfUnity& pu, const ReconstructParams& params, ReconstructResult& result) {
   TriMesh mesh = mesh_from_soup(result.mesh);  // manifold by construction (bow ties dropped)
   SimplifyParams simplify_params;
   simplify_params.keep_ratio = 0.25;
+  simplify_params.progress = params.progress;
   simplify(mesh, simplify_params);
   result.mesh = soup_from_mesh(mesh);
   result.vertex_variation.clear();
@@ -205,7 +206,7 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
     for (std::uint32_t& v : corners) v = renumber[v];
     result.mesh.triangles.push_back(corners);
   }
-  if (params.adaptive) adapt_to_features(pu, result);
+  if (params.adaptive) adapt_to_features(pu, params, result);
   return result;
 }
 

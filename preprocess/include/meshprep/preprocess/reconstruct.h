@@ -10,6 +10,7 @@
 #include "meshprep/preprocess/partition_of_unity.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace meshprep {
@@ -26,6 +27,7 @@ struct ReconstructParams {
   /// sigma and curvature are high, sparse where the surface is flat, for about the same number of
   /// faces as the uniform grid. Built by simplifying the twice finer grid (reconstruct.cpp).
   bool adaptive = false;
+  std::function<void(double)> progress;  ///< called with the fraction done (the --adaptive simplification)
 };
 
 struct ReconstructResult {
