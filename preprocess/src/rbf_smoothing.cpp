@@ -95,14 +95,14 @@ struct FeatureMap {
 // Membership marks for one neighbourhood search at a time per thread: an element is in the
 // current set when its mark equals the current stamp (no clearing between vertices).
 struct SearchMarks {
-  std::vector<unsigned> vertex, face;
+  std::vector<unsigned> in_rings, listed, in_region;  // per vertex, per vertex, per face
   unsigned stamp = 0;
   void next(const TriMesh& mesh) {
-    vertex.resize(mesh.n_vertices(), 0);
-    face.resize(mesh.n_faces(), 0);
+    in_rings.resize(mesh.n_vertices(), 0);
+    listed.resize(mesh.n_vertices(), 0);
+    in_region.resize(mesh.n_faces(), 0);
     if (++stamp == 0) {  // wrapped: clear once
-      std::fill(vertex.begin(), vertex.end(), 0);
-      std::fill(face.begin(), face.end(), 0);
+      for (auto* marks : {&in_rings, &listed, &in_region}) std::fill(marks->begin(), marks->end(), 0);
       stamp = 1;
     }
   }
@@ -118,8 +118,8 @@ std::vector<Vec3> same_side_neighbours(const TriMesh& mesh, TriMesh::VertexHandl
   thread_local SearchMarks marks;
   marks.next(mesh);
   const unsigned stamp = marks.stamp;
-  auto& in_rings = marks.vertex;
-  auto& in_region = marks.face;
+  auto& in_rings = marks.in_rings;
+  auto& in_region = marks.in_region;
   Vec3 side = Vec3::Zero();
   for (const auto f : seeds) side += features.normals[static_cast<std::size_t>(f.idx())];
   side.normalize();
@@ -157,15 +157,15 @@ std::vector<Vec3> same_side_neighbours(const TriMesh& mesh, TriMesh::VertexHandl
       in_region[static_cast<std::size_t>(g.idx())] = stamp;
       region.push_back(g);
     }
-  // The region's vertices (v excluded), each once: the ring marks are reused, set to ~stamp.
+  // The region's vertices (v excluded), each once.
   std::vector<std::pair<double, int>> found;
   const Vec3 centre = point(mesh, v);
-  in_rings[static_cast<std::size_t>(v.idx())] = ~stamp;
+  marks.listed[static_cast<std::size_t>(v.idx())] = stamp;
   for (const auto f : region)
     for (const auto c : mesh.fv_range(f)) {
-      unsigned& mark = in_rings[static_cast<std::size_t>(c.idx())];
-      if (mark == ~stamp) continue;
-      mark = ~stamp;
+      unsigned& mark = marks.listed[static_cast<std::size_t>(c.idx())];
+      if (mark == stamp) continue;
+      mark = stamp;
       found.emplace_back((point(mesh, c) - centre).squaredNorm(), c.idx());
     }
   const std::size_t kept = std::min(count, found.size());
