@@ -188,14 +188,6 @@ PartitionOfUnity& PartitionOfUnity::operator=(PartitionOfUnity&&) noexcept = def
 
 std::size_t PartitionOfUnity::patches() const { return radii_.size(); }
 
-double PartitionOfUnity::nearest_sample_distance(double x, double y) const {
-  std::uint32_t index = 0;
-  double squared = 0;
-  const double query[2] = {x, y};
-  index_->samples->tree.knnSearch(query, 1, &index, &squared);
-  return std::sqrt(squared);
-}
-
 double PartitionOfUnity::median_sample_spacing() const { return median_spacing_; }
 
 PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {

@@ -72,8 +72,6 @@ class PartitionOfUnity {
   /// The samples' bounding rectangle in the frame's (x, y).
   const Eigen::AlignedBox2d& footprint() const { return footprint_; }
   std::size_t patches() const;
-  /// Distance in the plane from frame coordinates (x, y) to the nearest sample.
-  double nearest_sample_distance(double x, double y) const;
   /// The median, over the samples, of the distance (in the plane) to their nearest neighbour.
   double median_sample_spacing() const;
 
