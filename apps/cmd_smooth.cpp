@@ -10,6 +10,7 @@
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/report_writers.h"
 #include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/triangle_metrics.h"
 
 #include <iostream>
 #include <map>
@@ -41,11 +42,14 @@ int run_smooth(SmoothOptions o) {
   QualityReport quality = analyze_quality(output, QualityParams(), &loaded.soup);
   quality.path = o.output;
   quality.reference->path = o.input;
-  const std::size_t input_intersections = find_self_intersections(loaded.soup).count;
+  const std::size_t input_intersections =
+      result.input_self_intersections ? *result.input_self_intersections : find_self_intersections(loaded.soup).count;
   refuse_new_intersections(quality, input_intersections, o.input, "smoothed", "Use fewer --iterations");
   write_soup(output, o.output);
 
-  const QualityReport input_quality = analyze_quality(loaded.soup);
+  std::vector<double> input_radius_ratio;
+  for (const TriangleShape& shape : triangle_shapes(loaded.soup))
+    if (!shape.degenerate) input_radius_ratio.push_back(shape.radius_ratio);
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
@@ -68,7 +72,7 @@ int run_smooth(SmoothOptions o) {
       result.volume_before ? json_number(*result.volume_after / *result.volume_before - 1) : nullptr;
   json["max_displacement"] = result.max_displacement;
   json["time_seconds"] = result.seconds;
-  json["input_radius_ratio"] = json_distribution(input_quality.radius_ratio);
+  json["input_radius_ratio"] = json_distribution(summarize(input_radius_ratio));
   json["input_self_intersections"] = input_intersections;
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);

@@ -4,14 +4,7 @@
 # 10 %, then the scale run (bunny00 Loop-subdivided twice, 1.2 M faces, to 10 %). Figures are
 # meshprep's own quality report against the input (Hausdorff and RMS / bbox diagonal).
 # Needs ../shared/data. Usage: bench/bench_simplify.sh [build-dir]   (default: build)
-set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$root/build}
-bin=$build/bin/meshprep
-data=$root/../shared/data/meshes
-[ -d "$data" ] || { echo "skipped: $data not found"; exit 0; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/bench_setup.sh" "${1:-}" meshes
 
 row() {  # mesh-file ratio cost label
   "$bin" simplify "$1" -o "$work/out.off" --ratio "$2" --cost "$3" --json "$work/r.json" > /dev/null

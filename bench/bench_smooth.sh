@@ -4,14 +4,7 @@
 # mesh plus Gaussian noise along the normals, 0.1 % of the diagonal). Distances are to the CLEAN
 # mesh (meshprep quality --reference, / bbox diagonal); time is the smoothing itself
 # (time_seconds, which includes the self-intersection checks). Usage: bench/bench_smooth.sh [build-dir]
-set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$root/build}
-bin=$build/bin/meshprep
-data=$root/../shared/data/meshes
-[ -d "$data/noisy" ] || { echo "skipped: $data/noisy not found"; exit 0; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/bench_setup.sh" "${1:-}" meshes/noisy
 
 echo "| mesh | method | RMS to clean | Hausdorff to clean | volume change | radius ratio p95 | time (s) |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"

@@ -188,6 +188,8 @@ PartitionOfUnity& PartitionOfUnity::operator=(PartitionOfUnity&&) noexcept = def
 
 std::size_t PartitionOfUnity::patches() const { return radii_.size(); }
 
+const std::vector<Vector2d>& PartitionOfUnity::sample_positions() const { return index_->samples->points; }
+
 double PartitionOfUnity::median_sample_spacing() const { return median_spacing_; }
 
 PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {

@@ -14,10 +14,7 @@ namespace {
 
 constexpr int kRings = 3;  // how far a neighbourhood reaches (in edges)
 
-Vec3 point(const TriMesh& mesh, TriMesh::VertexHandle v) {
-  const TriMesh::Point& p = mesh.point(v);
-  return Vec3(p[0], p[1], p[2]);
-}
+Vec3 point(const TriMesh& mesh, TriMesh::VertexHandle v) { return to_eigen(mesh.point(v)); }
 
 // Face normals denoised by bilateral filtering (Zheng, Fu, Au and Tai 2011): each normal becomes
 // the mean of the normals of the faces around it (sharing a vertex), weighted by area, by a

@@ -176,12 +176,10 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
   }
   const std::vector<PartitionOfUnity::Value> heights = pu.evaluate_grid(grid);
 
-  std::vector<Vector2d> planar(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) planar[i] = pu.frame().to_local(points[i]).head<2>();
   const GridTriangles cells{grid};
   std::vector<Triangle> triangles(cells.count());
   for (std::size_t t = 0; t < triangles.size(); ++t) triangles[t] = cells.corners(t);
-  std::vector<char> kept = near_samples(planar, grid, result.max_gap);
+  std::vector<char> kept = near_samples(pu.sample_positions(), grid, result.max_gap);
   result.gap_triangles = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 0));
   result.gap_triangles += drop_bowties(triangles, kept, heights.size());
 

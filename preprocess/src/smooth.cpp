@@ -72,8 +72,9 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
   const auto start = std::chrono::steady_clock::now();
   SmoothResult result;
   const std::vector<TriMesh::Point> before(mesh.points(), mesh.points() + mesh.n_vertices());
-  const bool keep_volume = params.preserve_volume && closed(mesh);
-  if (closed(mesh)) result.volume_before = volume(mesh);
+  const bool is_closed = closed(mesh);
+  const bool keep_volume = params.preserve_volume && is_closed;
+  if (is_closed) result.volume_before = volume(mesh);
 
   if (params.method == SmoothMethod::Taubin) {
     taubin_smooth(mesh, params.iterations);
@@ -81,14 +82,12 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
     laplace_smooth(mesh, params.iterations);
   } else {
     const std::size_t input_intersections = find_self_intersections(soup_from_mesh(mesh)).count;
+    result.input_self_intersections = input_intersections;
     for (std::size_t i = 0; i < params.iterations; ++i) {
       RbfIterationCounts counts;
       const std::vector<TriMesh::Point> start_of_step(mesh.points(), mesh.points() + mesh.n_vertices());
       const std::vector<Vec3> moved = rbf_smoothing_step(mesh, params, counts);
-      for (const auto v : mesh.vertices()) {
-        const Vec3& p = moved[static_cast<std::size_t>(v.idx())];
-        mesh.set_point(v, TriMesh::Point(p.x(), p.y(), p.z()));
-      }
+      for (const auto v : mesh.vertices()) mesh.set_point(v, to_openmesh(moved[static_cast<std::size_t>(v.idx())]));
       result.undone_vertices += undo_new_intersections(mesh, start_of_step, input_intersections);
       result.feature_line_vertices = counts.feature_line;
       result.corner_vertices = counts.corners;

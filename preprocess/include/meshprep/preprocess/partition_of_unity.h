@@ -72,6 +72,8 @@ class PartitionOfUnity {
   /// The samples' bounding rectangle in the frame's (x, y).
   const Eigen::AlignedBox2d& footprint() const { return footprint_; }
   std::size_t patches() const;
+  /// The samples' (x, y) in the frame, in input order.
+  const std::vector<Eigen::Vector2d>& sample_positions() const;
   /// The median, over the samples, of the distance (in the plane) to their nearest neighbour.
   double median_sample_spacing() const;
 

@@ -51,6 +51,8 @@ struct SmoothResult {
   std::size_t undone_vertices = 0;        ///< moves taken back because the surface crossed itself
   double max_displacement = 0;            ///< of a vertex from input to output
   std::optional<double> volume_before, volume_after;  ///< closed meshes
+  /// Intersecting face pairs of the input, when the method had to count them (Rbf: its guard).
+  std::optional<std::size_t> input_self_intersections;
   double seconds = 0;
 };
 

@@ -1,0 +1,11 @@
+# Sourced by the bench scripts: `source bench_setup.sh BUILD_DIR DATA_SUBDIR`. Sets root, build,
+# bin (the meshprep binary), data (../shared/data/meshes) and work (a temporary directory removed
+# on exit); exits 0 with a message when DATA_SUBDIR of ../shared/data is missing.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${1:-$root/build}
+bin=$build/bin/meshprep
+data=$root/../shared/data/meshes
+[ -d "$root/../shared/data/$2" ] || { echo "skipped: $root/../shared/data/$2 not found"; exit 0; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
