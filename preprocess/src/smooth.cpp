@@ -1,5 +1,6 @@
 #include "meshprep/preprocess/smooth.h"
 
+#include "intersection_guard.h"
 #include "laplacian_smoothing.h"
 #include "rbf_smoothing.h"
 
@@ -41,27 +42,6 @@ void restore_volume(TriMesh& mesh, double target) {
   mesh.release_vertex_normals();
 }
 
-// A smoothing step must not make the surface cross itself: the vertices of faces that intersect
-// (beyond the pairs the input already had) go back to where the step found them, until none is
-// left. Returns the number of vertices put back.
-std::size_t undo_new_intersections(TriMesh& mesh, const std::vector<TriMesh::Point>& before, std::size_t allowed) {
-  std::size_t undone = 0;
-  for (int round = 0; round < 8; ++round) {
-    const TriangleSoup soup = soup_from_mesh(mesh);  // same vertex and face numbering (no deletions)
-    const SelfIntersections found = find_self_intersections(soup);
-    if (found.count <= allowed) break;
-    for (const auto& [a, b] : found.pairs)
-      for (const std::size_t f : {a, b})
-        for (const std::uint32_t v : soup.triangles[f]) {
-          const TriMesh::VertexHandle handle(static_cast<int>(v));
-          if (mesh.point(handle) == before[v]) continue;
-          mesh.set_point(handle, before[v]);
-          ++undone;
-        }
-  }
-  return undone;
-}
-
 }  // namespace
 
 SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
@@ -88,7 +68,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
       const std::vector<TriMesh::Point> start_of_step(mesh.points(), mesh.points() + mesh.n_vertices());
       const std::vector<Vec3> moved = rbf_smoothing_step(mesh, params, counts);
       for (const auto v : mesh.vertices()) mesh.set_point(v, to_openmesh(moved[static_cast<std::size_t>(v.idx())]));
-      result.undone_vertices += undo_new_intersections(mesh, start_of_step, input_intersections);
+      result.undone_vertices += detail::undo_new_intersections(mesh, start_of_step, input_intersections);
       result.feature_line_vertices = counts.feature_line;
       result.corner_vertices = counts.corners;
       result.boundary_vertices = counts.boundary;
