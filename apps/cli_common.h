@@ -45,5 +45,6 @@ Action add_tetrahedralize_command(CLI::App& app);
 Action add_simplify_command(CLI::App& app);
 Action add_reconstruct_command(CLI::App& app);
 Action add_smooth_command(CLI::App& app);
+Action add_enhance_command(CLI::App& app);
 
 }  // namespace meshprep::cli

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add(cli::add_reconstruct_command);
   add(cli::add_simplify_command);
   add(cli::add_smooth_command);
+  add(cli::add_enhance_command);
   add(cli::add_tetrahedralize_command);
   CLI::App* help = app.add_subcommand("help", "Show this help");
 

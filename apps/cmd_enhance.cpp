@@ -1,0 +1,130 @@
+// meshprep enhance IN -o OUT [--reference ORIGINAL] [--iterations K] [--max-deviation E]
+//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--json FILE|-]
+#include "cli_common.h"
+#include "progress_bar.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+#include "meshprep/preprocess/enhance.h"
+#include "meshprep/quality/report.h"
+#include "meshprep/quality/report_writers.h"
+#include "meshprep/quality/self_intersections.h"
+
+#include <iostream>
+#include <memory>
+
+namespace meshprep::cli {
+namespace {
+
+struct EnhanceOptions {
+  std::string input, output, reference, json;
+  EnhanceParams params;
+};
+
+nlohmann::ordered_json tail_json(const QualityTail& tail) {
+  nlohmann::ordered_json json;
+  json["mean_q"] = tail.mean_q;
+  json["stddev_q"] = tail.stddev_q;
+  json["q_p05"] = tail.q_p05;
+  json["under_target_fraction"] = tail.under_target_fraction;
+  json["min_angle_deg"] = tail.min_angle_deg;
+  return json;
+}
+
+int run_enhance(EnhanceOptions o) {
+  ensure_not_input(o.output, o.input);
+  ensure_not_input(o.json, o.input);
+  if (!o.reference.empty()) {
+    ensure_not_input(o.output, o.reference);
+    ensure_not_input(o.json, o.reference);
+  }
+  LoadedMesh loaded = load_mesh(o.input);
+  require_manifold(loaded, o.input, "enhancement");
+  std::unique_ptr<TriangleSoup> reference;
+  if (!o.reference.empty()) {
+    reference = std::make_unique<TriangleSoup>(read_soup(o.reference));
+    if (reference->triangles.empty()) throw InvalidInput(o.reference + ": the reference has no faces");
+  }
+  ProgressBar bar("enhance");
+  o.params.progress = [&bar](double fraction) { bar.update(fraction); };
+  const EnhanceResult result = enhance(loaded.mesh, reference.get(), o.params);
+  bar.finish();
+  const TriangleSoup output = soup_from_mesh(loaded.mesh);
+
+  const TriangleSoup& against = reference ? *reference : loaded.soup;
+  QualityReport quality = analyze_quality(output, QualityParams(), &against);
+  quality.path = o.output;
+  quality.reference->path = reference ? o.reference : o.input;
+  refuse_new_intersections(quality, find_self_intersections(loaded.soup).count, o.input, "enhanced",
+                           "Use --no-flips or a smaller --max-deviation");
+  write_soup(output, o.output);
+
+  nlohmann::ordered_json json;
+  json["input"] = o.input;
+  json["output"] = o.output;
+  json["reference"] = reference ? nlohmann::ordered_json(o.reference) : nlohmann::ordered_json(nullptr);
+  json["faces_before"] = loaded.soup.triangles.size();
+  json["faces_after"] = output.triangles.size();
+  json["rounds"] = result.rounds;
+  json["kept_round"] = result.kept_round;
+  json["flips"] = result.flips;
+  json["removed_vertices"] = result.removed_vertices;
+  json["line_vertices"] = result.line_vertices;
+  json["fixed_vertices"] = result.fixed_vertices;
+  json["undone_moves"] = result.undone_moves;
+  json["parameters"] = {{"max_deviation", o.params.max_deviation},
+                        {"target_min_angle_deg", o.params.target_min_angle_deg},
+                        {"feature_angle_deg", o.params.feature_angle_deg},
+                        {"tail_k", o.params.tail_k},
+                        {"tail_weight", o.params.tail_weight},
+                        {"fidelity_weight", o.params.fidelity_weight},
+                        {"flip_dihedral_deg", o.params.flip_dihedral_deg},
+                        {"flips", o.params.flips}};
+  json["tail_before"] = tail_json(result.before);
+  json["tail_after"] = tail_json(result.after);
+  json["time_seconds"] = result.seconds;
+  json["quality"] = to_json(quality);
+  if (!o.json.empty()) emit_json(json, o.json);
+  if (o.json != "-")
+    std::cout << o.input << " -> " << o.output << ": " << result.kept_round << " round(s), " << result.flips
+              << " flips in " << result.seconds << " s; faces under " << o.params.target_min_angle_deg << " deg "
+              << 100 * result.before.under_target_fraction << " % -> " << 100 * result.after.under_target_fraction
+              << " %, smallest angle " << result.before.min_angle_deg << " -> " << result.after.min_angle_deg
+              << " deg, Hausdorff to the " << (reference ? "reference " : "input ")
+              << quality.reference->hausdorff_relative << " of the diagonal\n";
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_enhance_command(CLI::App& app) {
+  auto o = std::make_shared<EnhanceOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "enhance", "Improve the triangles' shapes without leaving the surface (statistical enhancement with Ceres)");
+  cmd->add_option("input", o->input, "Surface mesh (manifold; closed or with boundaries)")->required();
+  cmd->add_option("-o,--output", o->output, "Enhanced surface (.off .obj .ply .stl)")->required();
+  cmd->add_option("--reference", o->reference,
+                  "The original surface to stay on (e.g. the mesh before simplification); default: the input");
+  cmd->add_option("--iterations", o->params.iterations, "Rounds at most (statistic, flips, Ceres solve, projection)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
+      ->capture_default_str();
+  cmd->add_option("--max-deviation", o->params.max_deviation,
+                  "A face may not move farther than this fraction of the bounding-box diagonal from the reference "
+                  "(unless it already was)")
+      ->check(CLI::Range(1e-12, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--target-min-angle", o->params.target_min_angle_deg,
+                  "Faces with a smaller angle (degrees) are always in the statistic's bad tail")
+      ->check(CLI::Range(1.0, 59.0))
+      ->capture_default_str();
+  cmd->add_option("--feature-angle", o->params.feature_angle_deg,
+                  "Edges with a larger dihedral angle (degrees) are creases: their vertices slide only along them; "
+                  "180 = none")
+      ->check(CLI::Range(1.0, 180.0))
+      ->capture_default_str();
+  cmd->add_flag("--flips,!--no-flips", o->params.flips, "Flip edges where moving vertices cannot help (default on)");
+  cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");
+  return [o] { return run_enhance(*o); };
+}
+
+}  // namespace meshprep::cli

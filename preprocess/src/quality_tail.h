@@ -1,0 +1,22 @@
+#pragma once
+// The statistic that drives the enhancement (enhance.h, step 1).
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/preprocess/enhance.h"
+
+#include <vector>
+
+namespace meshprep::detail {
+
+/// The distribution of q = 1 / radius_ratio over the faces of `mesh` (degenerate faces q = 0).
+QualityTail measure_tail(const TriMesh& mesh, double target_min_angle_deg);
+
+/// Per face (by face index): 1 + gamma (tau - q) / s below tau = mean - k s, and at least
+/// 1 + gamma for a face whose smallest angle is under the target; 1 elsewhere.
+std::vector<double> tail_weights(const TriMesh& mesh, const EnhanceParams& params);
+
+/// Whether `now` is a better distribution than `best`: fewer faces under the target angle, or as
+/// many and a 5th percentile of q higher by more than 1e-3.
+bool improves(const QualityTail& now, const QualityTail& best);
+
+}  // namespace meshprep::detail

@@ -1,0 +1,69 @@
+#pragma once
+// What each vertex of a mesh may do while it is relocated on a surface, and where a moved vertex
+// is put back: onto the reference surface, or onto its own feature line.
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/quality/triangle_bvh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meshprep::detail {
+
+enum class VertexRole : std::uint8_t {
+  Surface,  ///< on no feature: moves in its tangent plane
+  Line,     ///< on exactly two feature edges (a crease or the boundary): slides along them
+  Fixed     ///< a corner (one or three or more feature edges) or a non-manifold vertex
+};
+
+/// The features of a mesh, found once at the start, kept as properties of the mesh (so that they
+/// follow its elements through flips, collapses and garbage collection; flips and collapses never
+/// touch a feature edge or a vertex on one).
+///
+/// Features are boundary edges and creases. A crease is a run of at least three edges whose
+/// dihedral angles exceed the feature angle, joined at vertices where the run goes nearly straight
+/// on (turns by less than 45 degrees) and that have no other such edge. A CAD part's creases are
+/// such runs; the isolated folds of a rough scan (femur: a quarter of its edges over 45 degrees,
+/// in every direction) are not, and stay free to move.
+class SurfaceConstraints {
+ public:
+  /// `mesh` and `reference` must outlive this object, which adds its properties to `mesh` and
+  /// removes them when destroyed.
+  SurfaceConstraints(TriMesh& mesh, const TriangleSoup& reference, double feature_angle_deg);
+  ~SurfaceConstraints();
+  SurfaceConstraints(const SurfaceConstraints&) = delete;
+  SurfaceConstraints& operator=(const SurfaceConstraints&) = delete;
+
+  VertexRole role(TriMesh::VertexHandle v) const { return mesh_.property(role_, v); }
+  bool is_feature(TriMesh::EdgeHandle e) const { return mesh_.property(feature_, e) != 0; }
+
+  /// The two feature edges' other ends of a Line vertex.
+  std::pair<TriMesh::VertexHandle, TriMesh::VertexHandle> line_neighbours(TriMesh::VertexHandle v) const;
+
+  /// Where a vertex that moved to x belongs: Surface vertices the closest point of the reference,
+  /// raised along the reference's normal by the vertex's offset at the start (a simplified
+  /// mesh's vertices sit off the original surface so that its faces follow it: sliding keeps that),
+  /// Line vertices the closest point of the feature line they were on at the start (the input's
+  /// segments of their run). Fixed vertices do not move; x is returned.
+  Vec3 project(TriMesh::VertexHandle v, const Vec3& x) const;
+
+  /// Closest point of the reference surface to x.
+  TriangleBvh::Hit closest_on_reference(const Vec3& x) const { return bvh_.closest_point(x); }
+  const TriangleBvh& reference_bvh() const { return bvh_; }
+  /// Unit normal of a reference face (zero if it is degenerate).
+  Vec3 reference_normal(std::size_t face) const;
+
+ private:
+  struct Segment {
+    Vec3 a, b;
+  };
+  TriMesh& mesh_;
+  OpenMesh::VPropHandleT<VertexRole> role_;
+  OpenMesh::VPropHandleT<int> line_;          ///< Line vertices: index into lines_; -1 otherwise
+  OpenMesh::VPropHandleT<double> offset_;     ///< Surface vertices: signed distance to the reference at the start
+  OpenMesh::EPropHandleT<char> feature_;
+  std::vector<std::vector<Segment>> lines_;   ///< the input's feature segments, one list per line
+  TriangleBvh bvh_;
+};
+
+}  // namespace meshprep::detail

@@ -1,0 +1,26 @@
+#pragma once
+// Step 3 of the enhancement (enhance.h): one Ceres least-squares problem that moves the vertices
+// on their charts so that the weighted faces get closer to equilateral.
+
+#include "surface_constraints.h"
+
+#include "meshprep/core/mesh.h"
+
+#include <vector>
+
+namespace meshprep::detail {
+
+struct RelocationWeights {
+  std::vector<double> face;        ///< the statistic's weight of each face (by face index)
+  double fidelity = 1;             ///< lambda of the face-fidelity residual
+  /// Closest point of the reference to each face's centroid (by face index): the fidelity
+  /// residual's tangent plane.
+  std::vector<TriangleBvh::Hit> centroid_hits;
+};
+
+/// Where the vertices go (by vertex index; fixed vertices where they are), before they are put
+/// back onto the surface. Runs on `threads` threads (Jacobian evaluation and factorisation).
+std::vector<Vec3> relocate_on_surface(const TriMesh& mesh, const SurfaceConstraints& constraints,
+                                      const RelocationWeights& weights, int threads);
+
+}  // namespace meshprep::detail

@@ -1,0 +1,35 @@
+#pragma once
+// The topology changes of the enhancement (enhance.h, step 2), for where moving vertices alone
+// cannot help: edge flips, and the removal of valence-3 vertices. Never across a feature, never
+// away from the surface.
+
+#include "surface_constraints.h"
+
+#include "meshprep/core/mesh.h"
+
+#include <cstddef>
+
+namespace meshprep::detail {
+
+struct CleanupRules {
+  double max_dihedral_deg = 20;  ///< the two faces after a flip must be this close to coplanar
+  double max_deviation = 0;      ///< absolute distance to the reference a change may reach anyway
+};
+
+/// One sweep over the interior non-feature edges: flip where the smaller of the two faces'
+/// smallest angles grows, the new faces are nearly coplanar and keep the old pair's orientation,
+/// no vertex drops under valence 3, the surface moves by at most max_deviation (the two diagonals'
+/// midpoints apart along the normal), and the new diagonal's midpoint is no farther from the
+/// reference than max(the old one's, max_deviation). The two old faces are not asked to be
+/// coplanar: a cap (an angle near 180 degrees) has no reliable normal. Returns the flips made.
+std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules);
+
+/// Removes Surface vertices of valence 3 (the three faces become one) where the new face's
+/// smallest angle beats the three old ones', keeps their orientation, passes within max_deviation
+/// of the removed vertex, and its centroid is within
+/// max(max_deviation, the old faces' largest centroid distance) of the reference; at most `budget`
+/// vertices. The mesh is garbage-collected afterwards. Returns the vertices removed.
+std::size_t remove_valence_three(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
+                                 std::size_t budget);
+
+}  // namespace meshprep::detail
