@@ -63,7 +63,7 @@ std::vector<double> tail_weights(const TriMesh& mesh, const EnhanceParams& param
 
 bool improves(const QualityTail& now, const QualityTail& best) {
   if (now.under_target_fraction != best.under_target_fraction) return now.under_target_fraction < best.under_target_fraction;
-  return now.q_p05 > best.q_p05 + 1e-3;
+  return now.q_p05 > best.q_p05 + 0.01 * (1 - best.q_p05);
 }
 
 }  // namespace meshprep::detail

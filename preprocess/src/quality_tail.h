@@ -16,7 +16,7 @@ QualityTail measure_tail(const TriMesh& mesh, double target_min_angle_deg);
 std::vector<double> tail_weights(const TriMesh& mesh, const EnhanceParams& params);
 
 /// Whether `now` is a better distribution than `best`: fewer faces under the target angle, or as
-/// many and a 5th percentile of q higher by more than 1e-3.
+/// many and a 5th percentile of q that closed more than 1 % of its gap to 1 (the equilateral).
 bool improves(const QualityTail& now, const QualityTail& best);
 
 }  // namespace meshprep::detail
