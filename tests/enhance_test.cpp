@@ -80,7 +80,7 @@ TEST(Enhance, ASliverInAFlatGridIsRepairedInThePlane) {
 TEST(Enhance, CubeEdgesAndCornersStay) {
   // Vertices pushed along a cube edge and inside a side make slivers; the edge vertices may only
   // slide along their edge, the corners not at all, and every vertex stays on the cube.
-  const int n = 4;
+  const int n = 6;  // an edge is a run of 6 sharp edges: a crease (runs of 5 or more)
   TriangleSoup cube = test::subdivided_cube(n);
   for (Vec3& p : cube.points) {
     if (p == Vec3(1, 0, 0)) p = Vec3(1.8, 0, 0);

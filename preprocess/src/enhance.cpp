@@ -191,9 +191,9 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     result.rounds = round;
     if (params.flips) {
       const TriMesh before_cleanup = mesh;
-      const detail::CleanupRules rules{params.flip_dihedral_deg, max_deviation};
+      const detail::CleanupRules rules{params.flip_dihedral_deg, max_deviation, min_angle_cosine};
       const std::size_t flips = detail::flip_for_angles(mesh, constraints, rules);
-      const std::size_t removed = detail::remove_valence_three(mesh, constraints, rules, removal_budget - removed_vertices);
+      const std::size_t removed = detail::collapse_for_angles(mesh, constraints, rules, removal_budget - removed_vertices);
       if (find_self_intersections(soup_from_mesh(mesh)).count > allowed_intersections) {
         mesh = before_cleanup;
       } else {

@@ -10,8 +10,8 @@ namespace {
 using VertexHandle = TriMesh::VertexHandle;
 using EdgeHandle = TriMesh::EdgeHandle;
 
-const double kStraightCosine = std::cos(135.0 * M_PI / 180.0);  // a run turns by less than 45 degrees
-constexpr std::size_t kShortestCrease = 3;                        // edges
+const double kStraightCosine = std::cos(150.0 * M_PI / 180.0);  // a run turns by less than 30 degrees
+constexpr std::size_t kShortestCrease = 5;                        // edges
 
 Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
 

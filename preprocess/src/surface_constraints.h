@@ -20,9 +20,10 @@ enum class VertexRole : std::uint8_t {
 /// follow its elements through flips, collapses and garbage collection; flips and collapses never
 /// touch a feature edge or a vertex on one).
 ///
-/// Features are boundary edges and creases. A crease is a run of at least three edges whose
+/// Features are boundary edges and creases. A crease is a run of at least five edges whose
 /// dihedral angles exceed the feature angle, joined at vertices where the run goes nearly straight
-/// on (turns by less than 45 degrees) and that have no other such edge. A CAD part's creases are
+/// on (turns by less than 30 degrees) and that have no other such edge (measured: fandisk at 30 %
+/// keeps 456 of its 498 sharp edges, the femur 74 of 2595). A CAD part's creases are
 /// such runs; the isolated folds of a rough scan (femur: a quarter of its edges over 45 degrees,
 /// in every direction) are not, and stay free to move.
 class SurfaceConstraints {

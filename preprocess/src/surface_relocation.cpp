@@ -44,6 +44,10 @@ VertexChart chart_of(const TriMesh& mesh, const SurfaceConstraints& constraints,
     case VertexRole::Surface: {
       const Vec3 normal = vertex_normal(mesh, v);
       if (!(normal.norm() > 0)) return fixed_chart(x);
+      // Next to a feature the 2-ring reaches across it and no quadratic fits both sides: the
+      // vertex moves in its tangent plane (its own faces are all on its side).
+      for (const VertexHandle w : mesh.vv_range(v))
+        if (constraints.role(w) != VertexRole::Surface) return surface_chart(x, normal.normalized(), {});
       return surface_chart(x, normal.normalized(), two_ring(mesh, v));
     }
     case VertexRole::Line: {

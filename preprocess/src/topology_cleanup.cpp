@@ -2,6 +2,8 @@
 
 #include "triangle_angles.h"
 
+#include "meshprep/quality/triangle_bvh.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,10 +34,19 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
     // Faces (a, b, c) and (b, a, d) become (a, d, c) and (d, b, c).
     const double before = std::max(smallest_angle_cosine(a, b, c), smallest_angle_cosine(b, a, d));
     const double after = std::max(smallest_angle_cosine(a, d, c), smallest_angle_cosine(d, b, c));
-    if (!(after < before - 1e-9)) continue;
+    const Vec3 n0 = area_normal(a, b, c), n1 = area_normal(b, a, d);
     const Vec3 m0 = area_normal(a, d, c), m1 = area_normal(d, b, c);
     if (m0.dot(m1) < cos_max * m0.norm() * m1.norm()) continue;
-    const Vec3 normal = area_normal(a, b, c) + area_normal(b, a, d);
+    // A fold (the two faces turned by more than 90 degrees against each other: a thin wedge that
+    // TetGen can only fill with flat tets) is undone when the flip leaves the two faces nearly
+    // coplanar and no angle under the target that was not there.
+    const bool unfolds = n0.dot(n1) < 0 && after <= std::max(before, rules.min_angle_cosine);
+    if (!(after < before - 1e-9) && !unfolds) continue;
+    // The local orientation: the normals of every face around a and b (a fold's own two faces
+    // nearly cancel).
+    Vec3 normal = Vec3::Zero();
+    for (const VertexHandle end : {va, vb})
+      for (const auto f : mesh.vf_range(end)) normal += to_eigen(mesh.calc_face_normal(f)) * mesh.calc_face_area(f);
     if (m0.dot(normal) <= 0 || m1.dot(normal) <= 0) continue;
     // The flip replaces the tetrahedron's one pair of faces by the other: its height (the two
     // diagonals' midpoints apart along the normal) is how far the surface moves.
@@ -48,38 +59,68 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
   return flips;
 }
 
-std::size_t remove_valence_three(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
-                                 std::size_t budget) {
+namespace {
+
+// What collapsing halfedge v -> w (v removed, w kept where it is) does to the faces around v.
+struct CollapseEffect {
+  bool acceptable = false;
+  double new_worst = 1;  // largest smallest-angle cosine of the faces that remain
+};
+
+CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& constraints, TriMesh::HalfedgeHandle h,
+                               double old_worst, double old_gap, double max_deviation) {
+  const VertexHandle v = mesh.from_vertex_handle(h), w = mesh.to_vertex_handle(h);
+  const Vec3 x = point(mesh, v), y = point(mesh, w);
+  CollapseEffect effect;
+  double nearest_new_face = INFINITY;  // from the removed vertex
+  for (const auto f : mesh.vf_range(v)) {
+    Vec3 before[3], after[3];
+    int k = 0;
+    bool has_w = false;
+    for (const VertexHandle u : mesh.fv_range(f)) {
+      has_w = has_w || u == w;
+      before[k] = point(mesh, u);
+      after[k] = u == v ? y : before[k];
+      ++k;
+    }
+    if (has_w) continue;  // one of the two faces that vanish
+    const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
+    if (n0.dot(n1) <= 0.5 * n0.norm() * n1.norm()) return effect;  // turns by more than 60 degrees
+    if (distance_to_reference(constraints, (after[0] + after[1] + after[2]) / 3.0) > std::max(old_gap, max_deviation))
+      return effect;
+    effect.new_worst = std::max(effect.new_worst == 1 ? -1.0 : effect.new_worst, smallest_angle_cosine(after[0], after[1], after[2]));
+    nearest_new_face = std::min(nearest_new_face, (closest_point_on_triangle(x, after[0], after[1], after[2]) - x).norm());
+  }
+  effect.acceptable = nearest_new_face <= max_deviation && effect.new_worst < old_worst;
+  return effect;
+}
+
+}  // namespace
+
+std::size_t collapse_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
+                                std::size_t budget) {
   std::size_t removed = 0;
   for (const auto v : mesh.vertices()) {
     if (removed >= budget) break;
-    if (mesh.status(v).deleted() || mesh.is_boundary(v) || mesh.valence(v) != 3 || constraints.role(v) != VertexRole::Surface)
-      continue;
-    // The ring a, b, c in the order of the faces around v: the new face (a, b, c) keeps their orientation.
-    VertexHandle ring[3];
-    int k = 0;
-    for (const VertexHandle w : mesh.vv_range(v)) ring[k++] = w;
-    const Vec3 a = point(mesh, ring[0]), b = point(mesh, ring[1]), c = point(mesh, ring[2]);
-    const Vec3 new_normal = area_normal(a, b, c);
-    Vec3 old_normal = Vec3::Zero();
+    if (mesh.status(v).deleted() || mesh.is_boundary(v) || constraints.role(v) != VertexRole::Surface) continue;
     double old_worst = -1, old_gap = 0;
     for (const auto f : mesh.vf_range(v)) {
       Vec3 p[3];
       int i = 0;
-      for (const VertexHandle w : mesh.fv_range(f)) p[i++] = point(mesh, w);
-      old_normal += area_normal(p[0], p[1], p[2]);
+      for (const VertexHandle u : mesh.fv_range(f)) p[i++] = point(mesh, u);
       old_worst = std::max(old_worst, smallest_angle_cosine(p[0], p[1], p[2]));
       old_gap = std::max(old_gap, distance_to_reference(constraints, (p[0] + p[1] + p[2]) / 3.0));
     }
-    if (!(smallest_angle_cosine(a, b, c) < old_worst)) continue;
-    // The new face takes the old faces' orientation (whatever order vv_range gave a, b, c in); it
-    // must not turn by more than 60 degrees from their summed normal (v was no spike).
-    if (std::abs(new_normal.dot(old_normal)) < 0.5 * new_normal.norm() * old_normal.norm()) continue;
-    if (std::abs((point(mesh, v) - a).dot(new_normal.normalized())) > rules.max_deviation) continue;
-    if (distance_to_reference(constraints, (a + b + c) / 3.0) > std::max(old_gap, rules.max_deviation)) continue;
-    const auto h = mesh.find_halfedge(v, ring[0]);
-    if (!h.is_valid() || !mesh.is_collapse_ok(h)) continue;
-    mesh.collapse(h);
+    if (old_worst <= rules.min_angle_cosine) continue;  // every angle around v is good enough
+    TriMesh::HalfedgeHandle best;
+    double best_worst = old_worst;
+    for (const auto h : mesh.voh_range(v)) {
+      if (!mesh.is_collapse_ok(h)) continue;
+      const CollapseEffect effect = collapse_effect(mesh, constraints, h, old_worst, old_gap, rules.max_deviation);
+      if (effect.acceptable && effect.new_worst < best_worst) best_worst = effect.new_worst, best = h;
+    }
+    if (!best.is_valid()) continue;
+    mesh.collapse(best);
     ++removed;
   }
   if (removed > 0) mesh.garbage_collection();

@@ -1,6 +1,6 @@
 #pragma once
 // The topology changes of the enhancement (enhance.h, step 2), for where moving vertices alone
-// cannot help: edge flips, and the removal of valence-3 vertices. Never across a feature, never
+// cannot help: edge flips, and collapses (valence-3 vertices, very short edges). Never across a feature, never
 // away from the surface.
 
 #include "surface_constraints.h"
@@ -14,6 +14,7 @@ namespace meshprep::detail {
 struct CleanupRules {
   double max_dihedral_deg = 20;  ///< the two faces after a flip must be this close to coplanar
   double max_deviation = 0;      ///< absolute distance to the reference a change may reach anyway
+  double min_angle_cosine = 1;   ///< collapses only where a smallest angle is under this angle
 };
 
 /// One sweep over the interior non-feature edges: flip where the smaller of the two faces'
@@ -24,12 +25,14 @@ struct CleanupRules {
 /// coplanar: a cap (an angle near 180 degrees) has no reliable normal. Returns the flips made.
 std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules);
 
-/// Removes Surface vertices of valence 3 (the three faces become one) where the new face's
-/// smallest angle beats the three old ones', keeps their orientation, passes within max_deviation
-/// of the removed vertex, and its centroid is within
-/// max(max_deviation, the old faces' largest centroid distance) of the reference; at most `budget`
-/// vertices. The mesh is garbage-collected afterwards. Returns the vertices removed.
-std::size_t remove_valence_three(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
-                                 std::size_t budget);
+/// Removes Surface vertices where a smallest angle around them is under the target: each is
+/// collapsed into the neighbour (kept where it is) that gives the best worst angle, when that beats
+/// the old worst angle, no remaining face turns by more than 60 degrees, the new faces' centroids
+/// stay within max(max_deviation, the old faces' largest centroid distance) of the reference, and
+/// the removed vertex is within max_deviation of a new face. This takes away valence-3 vertices
+/// and the ends of very short edges, which moving vertices cannot mend. At most `budget` vertices;
+/// the mesh is garbage-collected afterwards. Returns the vertices removed.
+std::size_t collapse_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
+                                std::size_t budget);
 
 }  // namespace meshprep::detail
