@@ -217,6 +217,45 @@ check "smooth taubin" 0 $?
 expect_error "smooth non-manifold message" "fin.off: face 4 .*non-manifold"
 [ ! -e out/x.off ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: smooth wrote on an error"; }
 
+# enhance: a sphere with vertices pushed along it gets better triangles and stays closed; bad
+# input or reference is exit 2, nothing written.
+python3 - <<'PY'
+import math
+lines = open("sphere.off").read().split("\n")
+nv = int(lines[1].split()[0])
+out = lines[:2]
+for i in range(nv):
+    x, y, z = map(float, lines[2 + i].split())
+    if i % 2 == 0 and abs(z) < 0.9:  # a tangential push (clear of the poles), back onto the sphere
+        t = (y * 0.2 - z, z * 0.3 - x * 0.2, x - y * 0.3)
+        x, y, z = x + 0.04 * t[0], y + 0.04 * t[1], z + 0.04 * t[2]
+        r = math.sqrt(x * x + y * y + z * z); x, y, z = x / r, y / r, z / r
+    out.append("%r %r %r" % (x, y, z))
+out += lines[2 + nv:]
+open("pushed_sphere.off", "w").write("\n".join(out))
+PY
+"$bin" enhance pushed_sphere.off -o out/enhanced.off --reference sphere.off --json out/enhance.json > /dev/null 2> err.txt
+check "enhance" 0 $?
+python3 -c "
+import json; j = json.load(open('out/enhance.json'))
+assert abs(j['faces_after'] / j['faces_before'] - 1) <= 0.02, j
+assert j['tail_after']['q_p05'] > j['tail_before']['q_p05'], j
+assert j['quality']['closed'] and j['quality']['self_intersections'] == 0 and j['reference'] == 'sphere.off', j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: enhance json"; }
+"$bin" enhance pushed_sphere.off -o out/noflip.off --no-flips --json - > out/noflip.json 2> err.txt
+check "enhance --no-flips" 0 $?
+python3 -c "
+import json; j = json.load(open('out/noflip.json')); assert j['flips'] == 0 and j['reference'] is None, j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: enhance --no-flips json"; }
+rm -f out/*
+"$bin" enhance pushed_sphere.off -o out/x.off --reference missing.off > /dev/null 2> err.txt; check "enhance missing reference" 2 $?
+expect_error "enhance missing reference message" "missing.off"
+"$bin" enhance pushed_sphere.off -o out/x.off --max-deviation 0 > /dev/null 2> err.txt; check "enhance zero deviation" 2 $?
+"$bin" enhance fin.off -o out/x.off > /dev/null 2> err.txt; check "enhance non-manifold input" 2 $?
+expect_error "enhance non-manifold message" "fin.off: face 4 .*non-manifold"
+"$bin" enhance pushed_sphere.off -o sphere.off --reference sphere.off > /dev/null 2> err.txt; check "enhance over its reference" 2 $?
+expect_no_file out/x.off "enhance on errors"
+
 # reconstruct: a height field from scattered points; bad point files are exit 2, nothing written.
 python3 -c "
 import math
