@@ -14,6 +14,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -33,26 +34,24 @@ const double kTurnCosine = std::cos(60.0 * M_PI / 180.0);  // largest normal tur
 
 Points points_of(const TriMesh& mesh) { return Points(mesh.points(), mesh.points() + mesh.n_vertices()); }
 
-// The face's area normal with its corners at `at` (by vertex index), or where they are now.
-Vec3 normal_of(const TriMesh& mesh, TriMesh::FaceHandle f, const Points* at = nullptr) {
-  Vec3 p[3];
+// The face's corners at `at` (by vertex index), or where they are now.
+std::array<Vec3, 3> corners_of(const TriMesh& mesh, TriMesh::FaceHandle f, const Points* at = nullptr) {
+  std::array<Vec3, 3> p;
   int k = 0;
-  for (const auto v : mesh.fv_range(f)) p[k++] = to_eigen(at ? (*at)[static_cast<std::size_t>(v.idx())] : mesh.point(v));
-  return (p[1] - p[0]).cross(p[2] - p[0]);
+  for (const auto v : mesh.fv_range(f)) p[static_cast<std::size_t>(k++)] = to_eigen(at ? (*at)[static_cast<std::size_t>(v.idx())] : mesh.point(v));
+  return p;
 }
 
+Vec3 normal_of(const std::array<Vec3, 3>& p) { return (p[1] - p[0]).cross(p[2] - p[0]); }
+
 Vec3 centroid_of(const TriMesh& mesh, TriMesh::FaceHandle f) {
-  Vec3 c = Vec3::Zero();
-  for (const auto v : mesh.fv_range(f)) c += to_eigen(mesh.point(v)) / 3.0;
-  return c;
+  const auto p = corners_of(mesh, f);
+  return (p[0] + p[1] + p[2]) / 3.0;
 }
 
 // How far a face is from the reference: the largest distance of its centroid and edge midpoints
 // (its corners are on the reference).
-double face_deviation(const TriMesh& mesh, TriMesh::FaceHandle f, const detail::SurfaceConstraints& constraints) {
-  Vec3 p[3];
-  int k = 0;
-  for (const auto v : mesh.fv_range(f)) p[k++] = to_eigen(mesh.point(v));
+double face_deviation(const std::array<Vec3, 3>& p, const detail::SurfaceConstraints& constraints) {
   double worst = 0;
   for (const Vec3& q : {Vec3((p[0] + p[1] + p[2]) / 3.0), Vec3(0.5 * (p[0] + p[1])), Vec3(0.5 * (p[1] + p[2])), Vec3(0.5 * (p[2] + p[0]))})
     worst = std::max(worst, constraints.closest_on_reference(q).squared_distance);
@@ -60,10 +59,11 @@ double face_deviation(const TriMesh& mesh, TriMesh::FaceHandle f, const detail::
 }
 
 // Faces that turned by more than 60 degrees in this round (or folded over) and faces carried
-// farther from the reference than the bound allows (face_deviation): their vertices go back to `before`, then the
-// faces around those vertices are checked again, until none is left.
+// farther from the reference than the bound allows (face_deviation, unless they already were):
+// their vertices go back to `before`, then the faces around those vertices are checked again,
+// until none is left. Each sweep measures its faces in parallel and puts vertices back in face order.
 std::size_t undo_bad_moves(TriMesh& mesh, const detail::SurfaceConstraints& constraints, const Points& before,
-                           const std::vector<double>& deviation_before, double max_deviation) {
+                           double max_deviation) {
   auto moved = [&](TriMesh::VertexHandle v) { return mesh.point(v) != before[static_cast<std::size_t>(v.idx())]; };
   std::vector<TriMesh::FaceHandle> suspects;
   for (const auto f : mesh.faces())
@@ -75,16 +75,22 @@ std::size_t undo_bad_moves(TriMesh& mesh, const detail::SurfaceConstraints& cons
   std::size_t undone = 0;
   std::vector<char> queued(mesh.n_faces(), 0);
   while (!suspects.empty()) {
-    std::vector<TriMesh::VertexHandle> reverted;
-    for (const auto f : suspects) {
-      queued[static_cast<std::size_t>(f.idx())] = 0;
-      const Vec3 n0 = normal_of(mesh, f, &before), n1 = normal_of(mesh, f);
-      bool bad = n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm();
-      if (!bad) {
-        bad = face_deviation(mesh, f, constraints) > std::max(max_deviation, deviation_before[static_cast<std::size_t>(f.idx())]);
+    std::vector<char> bad(suspects.size(), 0);
+    tbb::parallel_for(std::size_t(0), suspects.size(), [&](std::size_t k) {
+      const auto old_corners = corners_of(mesh, suspects[k], &before), corners = corners_of(mesh, suspects[k]);
+      const Vec3 n0 = normal_of(old_corners), n1 = normal_of(corners);
+      if (n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm()) {
+        bad[k] = 1;
+        return;
       }
-      if (!bad) continue;
-      for (const auto v : mesh.fv_range(f))
+      const double deviation = face_deviation(corners, constraints);
+      bad[k] = deviation > max_deviation && deviation > face_deviation(old_corners, constraints);
+    });
+    std::vector<TriMesh::VertexHandle> reverted;
+    for (std::size_t k = 0; k < suspects.size(); ++k) {
+      queued[static_cast<std::size_t>(suspects[k].idx())] = 0;
+      if (!bad[k]) continue;
+      for (const auto v : mesh.fv_range(suspects[k]))
         if (moved(v)) {
           mesh.set_point(v, before[static_cast<std::size_t>(v.idx())]);
           reverted.push_back(v);
@@ -113,15 +119,29 @@ std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const Tria
 
 // The other direction of the deviation bound: a reference vertex the mesh has moved away from
 // (farther than the bound, and than the input was) sends the vertices of its nearest face, now and
-// at the start of the round, back. The mesh's topology is that of the start of the round.
+// at the start of the round, back. Only a reference vertex whose nearest face moved can be farther
+// than it was; the others are not measured again. The mesh's topology is that of the start of the
+// round.
 std::size_t undo_uncovering_moves(TriMesh& mesh, const TriangleSoup& reference, const Points& before,
                                   const std::vector<TriangleBvh::Hit>& coverage_before,
                                   const std::vector<double>& allowed_distance) {
+  auto moved = [&](std::size_t face) {
+    for (const auto v : mesh.fv_range(TriMesh::FaceHandle(static_cast<int>(face))))
+      if (mesh.point(v) != before[static_cast<std::size_t>(v.idx())]) return true;
+    return false;
+  };
+  std::vector<std::size_t> suspects;
+  for (std::size_t i = 0; i < coverage_before.size(); ++i)
+    if (moved(coverage_before[i].face)) suspects.push_back(i);
+  const TriangleSoup soup = soup_from_mesh(mesh);
+  const TriangleBvh bvh(soup);
+  std::vector<TriangleBvh::Hit> coverage(suspects.size());
+  tbb::parallel_for(std::size_t(0), suspects.size(), [&](std::size_t k) { coverage[k] = bvh.closest_point(reference.points[suspects[k]]); });
   std::size_t undone = 0;
-  const std::vector<TriangleBvh::Hit> coverage = reference_coverage(mesh, reference);
-  for (std::size_t i = 0; i < coverage.size(); ++i) {
-    if (coverage[i].squared_distance <= allowed_distance[i] * allowed_distance[i]) continue;
-    for (const std::size_t face : {coverage[i].face, coverage_before[i].face})
+  for (std::size_t k = 0; k < suspects.size(); ++k) {
+    const std::size_t i = suspects[k];
+    if (coverage[k].squared_distance <= allowed_distance[i] * allowed_distance[i]) continue;
+    for (const std::size_t face : {coverage[k].face, coverage_before[i].face})
       for (const auto v : mesh.fv_range(TriMesh::FaceHandle(static_cast<int>(face)))) {
         const auto& old = before[static_cast<std::size_t>(v.idx())];
         if (mesh.point(v) == old) continue;
@@ -204,10 +224,6 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     const Points before = points_of(mesh);
     detail::RelocationWeights weights{detail::tail_weights(mesh, params), params.fidelity_weight, centroid_hits(mesh, constraints)};
     const std::vector<TriangleBvh::Hit> coverage_before = reference_coverage(mesh, surface);
-    std::vector<double> deviation_before(mesh.n_faces());
-    tbb::parallel_for(std::size_t(0), deviation_before.size(), [&](std::size_t i) {
-      deviation_before[i] = face_deviation(mesh, TriMesh::FaceHandle(static_cast<int>(i)), constraints);
-    });
     const std::vector<Vec3> moved = detail::relocate_on_surface(mesh, constraints, weights, threads);
     for (const auto v : mesh.vertices()) {
       const std::size_t i = static_cast<std::size_t>(v.idx());
@@ -218,7 +234,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     // Every guard only puts vertices back where the round found them; the next guard may then find
     // a face that is half old, half new, so they run again until none puts anything back.
     for (int pass = 0; pass < 8; ++pass) {
-      std::size_t undone = undo_bad_moves(mesh, constraints, before, deviation_before, max_deviation);
+      std::size_t undone = undo_bad_moves(mesh, constraints, before, max_deviation);
       undone += undo_uncovering_moves(mesh, surface, before, coverage_before, allowed_distance);
       undone += detail::undo_new_intersections(mesh, before, allowed_intersections);
       result.undone_moves += undone;

@@ -5,29 +5,15 @@
 /// was (the paper's Figure 6 stage, whose algorithm the paper omits; docs/enhancement.md has the
 /// design and the measurements).
 ///
-/// Each round:
-/// 1. The statistic. q = 1 / radius_ratio of every face (1 equilateral, 0 degenerate); its mean mu
-///    and standard deviation s; the tail threshold tau = mu - k s. A face's weight is
-///    w = 1 + gamma (tau - q) / s below tau (and at least 1 + gamma when its smallest angle is
-///    under the target), 1 elsewhere.
-/// 2. Topology: flips of interior non-feature edges that raise the smaller of the two faces'
-///    smallest angles, when the two new faces are nearly coplanar (dihedral under the flip
-///    threshold) and the new diagonal stays as close to the reference as the old one (or within
-///    the deviation bound); then valence-3 vertices whose three faces make a better one are
-///    removed (at most 1 % of the faces' count of vertices: the face count stays within 2 %).
-/// 3. One Ceres least-squares problem over all movable vertices: a vertex on no feature has two
-///    unknowns, its coordinates in its tangent plane, lifted onto a quadratic height map of the
-///    surface around it; a vertex on a crease or on the boundary has one, along its line; corners
-///    stay. Residuals: w (1/eta - 1) per face, eta = 4 sqrt(3) A / (|ab|^2 + |bc|^2 + |ca|^2) the
-///    mean ratio (automatic differentiation; the signed area in the face's own normal direction is
-///    a barrier against fold-overs), and a fidelity residual per face, sqrt(lambda) times the
-///    distance of its centroid to the reference's tangent plane there, over the mean edge length.
-/// 4. Every moved vertex is put back onto the reference (its closest point; its own feature line
-///    for crease and boundary vertices). Moves that turn a face by more than 60 degrees, carry a
-///    face farther than the deviation bound from the reference, or make the surface cross itself
-///    are taken back.
-/// The rounds stop when neither the fraction of faces under the target angle nor the 5th
-/// percentile of q improves; the best round is kept.
+/// Each round: (1) the statistic: q = 1 / radius_ratio per face, tail threshold tau = mean - k std,
+/// weights w = 1 + gamma (tau - q) / std below tau (at least 1 + gamma under the target angle);
+/// (2) flips and collapses that mend what moving cannot, never across a feature, never away from
+/// the surface; (3) one Ceres problem: w (1/eta - 1) per face (eta the mean ratio, automatic
+/// derivatives, a fold-over barrier) plus a face-fidelity residual, two unknowns per vertex on its
+/// tangent-plane height map, one along a crease or the boundary, corners fixed; (4) back onto the
+/// reference, a least-squares normal fit, and guards that take back moves which turn a face, leave
+/// the deviation bound in either direction, or make the surface cross itself. The rounds stop when
+/// the distribution stops improving; the best is kept.
 
 #include "meshprep/core/mesh.h"
 
