@@ -169,6 +169,13 @@ import json; j = json.load(open('out/simplify.json'))
 assert j['faces_before'] == 960 and j['reached_target'] and j['quality']['closed'] and j['quality']['genus'] == 0, j
 assert j['quality']['reference']['hausdorff_relative'] < 0.05, j['quality']['reference']" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify json"; }
+"$bin" simplify sphere.off -o out/sphere_enhanced.off --ratio 0.25 --enhance --json out/s_enhance.json > /dev/null 2> err.txt
+check "simplify --enhance" 0 $?
+python3 -c "
+import json; j = json.load(open('out/s_enhance.json'))
+assert j['reached_target'] and j['enhance']['stages'] == 3 and j['quality']['closed'], j
+assert j['quality']['self_intersections'] == 0 and j['quality']['faces_min_angle_below_20'] == 0, j['quality']" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: simplify --enhance json"; }
 for cost in distance quadric; do
   "$bin" simplify sphere.off -o out/sphere_$cost.off --ratio 0.25 --cost $cost --json out/s_$cost.json > /dev/null 2> err.txt
   check "simplify --cost $cost" 0 $?

@@ -175,6 +175,7 @@ void check(const EnhanceParams& params, const TriMesh& mesh) {
   if (!(params.max_deviation > 0) || !(params.target_min_angle_deg > 0 && params.target_min_angle_deg < 60) ||
       !(params.feature_angle_deg > 0 && params.feature_angle_deg <= 180) || !(params.tail_weight >= 0) ||
       !(params.fidelity_weight >= 0) || !(params.flip_dihedral_deg >= 0 && params.flip_dihedral_deg < 90) ||
+      !(params.max_face_change >= 0 && params.max_face_change <= 1) ||
       !std::isfinite(params.tail_k))
     throw InvalidInput("enhance: parameters out of range (max deviation > 0, target angle in (0, 60), feature angle in "
                        "(0, 180], flip dihedral in [0, 90), weights >= 0)");
@@ -190,8 +191,8 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   const double max_deviation = params.max_deviation * bounding_box(surface).diagonal().norm();
   const detail::SurfaceConstraints constraints(mesh, surface, params.feature_angle_deg);
   const std::size_t allowed_intersections = find_self_intersections(input).count;
-  // Each removed vertex takes two faces with it: the face count stays within 2 % of the input's.
-  const std::size_t removal_budget = mesh.n_faces() / 100;
+  // Each removed vertex takes two faces with it.
+  const auto removal_budget = static_cast<std::size_t>(params.max_face_change * static_cast<double>(mesh.n_faces()) / 2);
   const double min_angle_cosine = std::cos(params.target_min_angle_deg * M_PI / 180.0);
   const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 

@@ -164,13 +164,8 @@ void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyR
   }
 }
 
-}  // namespace
-
-SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
-  if (mesh.n_faces() == 0) throw InvalidInput("the mesh has no faces to simplify");
-  if (params.min_angle_deg < 0 || params.min_angle_deg >= 60)
-    throw InvalidInput("the minimum angle must be in [0, 60) degrees");
-  if (params.max_error < 0) throw InvalidInput("the maximum error must not be negative");
+// One reduction to the target with the chosen cost.
+SimplifyResult reduce(TriMesh& mesh, const SimplifyParams& params) {
   SimplifyResult result;
   result.faces_before = mesh.n_faces();
   result.target_faces = target_of(mesh, params);
@@ -185,6 +180,58 @@ SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
   mesh.garbage_collection();  // (the quadric baseline's deleted elements)
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.faces_after = mesh.n_faces();
+  return result;
+}
+
+constexpr int kEnhanceStages = 3;
+
+// simplify --enhance: kEnhanceStages reductions of equal ratio, each followed by an enhancement
+// against the input.
+SimplifyResult simplify_and_enhance(TriMesh& mesh, const SimplifyParams& params) {
+  const auto start = std::chrono::steady_clock::now();
+  const TriangleSoup original = soup_from_mesh(mesh);
+  SimplifyResult total;
+  total.faces_before = mesh.n_faces();
+  total.target_faces = target_of(mesh, params);
+  SimplifyParams stage = params;
+  EnhanceParams enhancement = params.enhance_params;
+  enhancement.max_face_change = 0.01 / kEnhanceStages;
+  const double step = static_cast<double>(total.target_faces) / static_cast<double>(total.faces_before);
+  for (int s = 1; s <= kEnhanceStages; ++s) {
+    stage.target_faces = s == kEnhanceStages ? total.target_faces
+                                             : static_cast<std::size_t>(std::llround(static_cast<double>(total.faces_before) *
+                                                                                     std::pow(step, double(s) / kEnhanceStages)));
+    const SimplifyResult r = reduce(mesh, stage);
+    total.collapses += r.collapses;
+    total.rejected_topology += r.rejected_topology;
+    total.rejected_shape += r.rejected_shape;
+    total.rejected_error += r.rejected_error;
+    total.energy_evaluations += r.energy_evaluations;
+    total.polish_flips += r.polish_flips;
+    total.polish_moves += r.polish_moves;
+    total.fit_moves += r.fit_moves;
+    total.intersection_retries += r.intersection_retries;
+    const EnhanceResult e = enhance(mesh, &original, enhancement);
+    ++total.enhance_stages;
+    total.enhance_rounds += e.kept_round;
+    total.enhance_flips += e.flips;
+    total.enhance_removed_vertices += e.removed_vertices;
+    if (params.progress) params.progress(static_cast<double>(s) / kEnhanceStages);
+  }
+  total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  total.faces_after = mesh.n_faces();
+  return total;
+}
+
+}  // namespace
+
+SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
+  if (mesh.n_faces() == 0) throw InvalidInput("the mesh has no faces to simplify");
+  if (params.min_angle_deg < 0 || params.min_angle_deg >= 60)
+    throw InvalidInput("the minimum angle must be in [0, 60) degrees");
+  if (params.max_error < 0) throw InvalidInput("the maximum error must not be negative");
+  SimplifyResult result =
+      params.enhance && params.cost != CollapseCost::Quadric ? simplify_and_enhance(mesh, params) : reduce(mesh, params);
   if (params.progress) params.progress(1.0);
   const double slack = 0.01 * static_cast<double>(result.target_faces);
   result.reached_target =

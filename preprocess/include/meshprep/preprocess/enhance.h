@@ -30,6 +30,8 @@ struct EnhanceParams {
   double target_min_angle_deg = 20;     ///< faces under this smallest angle are always in the tail
   double feature_angle_deg = 45;        ///< an edge with a larger dihedral angle is a crease; 180 = none
   bool flips = true;
+  /// Collapses may remove at most this fraction of the faces (two per removed vertex).
+  double max_face_change = 0.02;
   /// The statistic's constants; defaults fitted by bench/tune_enhance (see enhance_defaults.h).
   double tail_k;
   double tail_weight;                   ///< gamma

@@ -25,6 +25,7 @@
 /// 6 times, one more ring each time), so the target may then not be reached.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/preprocess/enhance.h"
 
 #include <cstddef>
 #include <functional>
@@ -53,6 +54,11 @@ struct SimplifyParams {
   /// least-squares fit of the vertices to the original surface along their normals (Bending and
   /// Distance only).
   bool polish = true;
+  /// The paper's Figure 6 combination: the reduction runs in three stages of equal ratio, each
+  /// followed by enhance() (enhance.h) against the input, so that the later collapses start from
+  /// well-shaped triangles (Bending and Distance only).
+  bool enhance = false;
+  EnhanceParams enhance_params;  ///< for the stages (max_face_change: the 1 % target slack in total)
   /// Called with the fraction of the work done, in [0, 1].
   std::function<void(double)> progress;
 };
@@ -69,6 +75,7 @@ struct SimplifyResult {
   std::size_t polish_flips = 0, polish_moves = 0;  ///< shape polish: edge flips, relaxation moves
   std::size_t fit_moves = 0;                        ///< least-squares fit to the original: vertex moves
   std::size_t intersection_retries = 0;  ///< restarts with a tighter error cap where the output crossed itself
+  std::size_t enhance_stages = 0, enhance_rounds = 0, enhance_flips = 0, enhance_removed_vertices = 0;
 };
 
 /// Simplify `mesh` in place (garbage-collected on return).
