@@ -4,6 +4,7 @@
 #include "vertex_chart.h"
 
 #include <ceres/ceres.h>
+#include <tbb/parallel_for.h>
 
 #include <array>
 #include <cmath>
@@ -72,14 +73,38 @@ std::vector<Vec3> relocate_on_surface(const TriMesh& mesh, const SurfaceConstrai
   double total_edge = 0;
   for (const auto e : mesh.edges()) total_edge += mesh.calc_edge_length(e);
   const double scale = mesh.n_edges() > 0 ? total_edge / static_cast<double>(mesh.n_edges()) : 1.0;
-  for (const auto v : mesh.vertices()) charts[static_cast<std::size_t>(v.idx())] = chart_of(mesh, constraints, v);
+  // The statistic decides what moves: the corners of the tail's faces (weight above 1). The faces
+  // around them are in the problem, so that mending the tail does not spoil its neighbours.
+  std::vector<char> active(n, 0);
+  for (const auto f : mesh.faces())
+    if (weights.face[static_cast<std::size_t>(f.idx())] > 1)
+      for (const auto v : mesh.fv_range(f)) active[static_cast<std::size_t>(v.idx())] = 1;
+  std::vector<TriMesh::FaceHandle> faces;
+  for (const auto f : mesh.faces()) {
+    bool touches = false;
+    for (const auto v : mesh.fv_range(f)) touches = touches || active[static_cast<std::size_t>(v.idx())];
+    if (touches) faces.push_back(f);
+  }
+  for (const auto v : mesh.vertices()) {
+    const std::size_t i = static_cast<std::size_t>(v.idx());
+    charts[i] = active[i] ? chart_of(mesh, constraints, v) : fixed_chart(point(mesh, v));
+  }
+
+  // The fidelity residual's tangent plane: the reference at the closest point to each centroid.
+  std::vector<TriangleBvh::Hit> centroid_hits(faces.size());
+  tbb::parallel_for(std::size_t(0), faces.size(), [&](std::size_t k) {
+    Vec3 centroid = Vec3::Zero();
+    for (const auto v : mesh.fv_range(faces[k])) centroid += point(mesh, v) / 3.0;
+    centroid_hits[k] = constraints.closest_on_reference(centroid);
+  });
 
   ceres::Problem problem;
   const double sqrt_fidelity = std::sqrt(weights.fidelity) / scale;
-  for (const auto f : mesh.faces()) {
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const TriMesh::FaceHandle f = faces[k];
     std::array<std::size_t, 3> corner{};
-    int k = 0;
-    for (const auto v : mesh.fv_range(f)) corner[static_cast<std::size_t>(k++)] = static_cast<std::size_t>(v.idx());
+    int corner_count = 0;
+    for (const auto v : mesh.fv_range(f)) corner[static_cast<std::size_t>(corner_count++)] = static_cast<std::size_t>(v.idx());
     auto* shape = new MeanRatioResidual;
     auto* fidelity = new FaceFidelityResidual;
     for (int i = 0; i < 3; ++i) shape->charts[i] = fidelity->charts[i] = charts[corner[static_cast<std::size_t>(i)]];
@@ -88,7 +113,7 @@ std::vector<Vec3> relocate_on_surface(const TriMesh& mesh, const SurfaceConstrai
     shape->signed_area = normal.norm() > 1e-14 * ((b - a).squaredNorm() + (c - a).squaredNorm());
     shape->normal = shape->signed_area ? normal.normalized() : Vec3::Zero();
     shape->sqrt_weight = std::sqrt(weights.face[static_cast<std::size_t>(f.idx())]);
-    const TriangleBvh::Hit& hit = weights.centroid_hits[static_cast<std::size_t>(f.idx())];
+    const TriangleBvh::Hit& hit = centroid_hits[k];
     fidelity->plane_point = hit.point;
     fidelity->plane_normal = constraints.reference_normal(hit.face);
     fidelity->sqrt_weight_over_scale = sqrt_fidelity;

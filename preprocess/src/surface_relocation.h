@@ -13,13 +13,11 @@ namespace meshprep::detail {
 struct RelocationWeights {
   std::vector<double> face;        ///< the statistic's weight of each face (by face index)
   double fidelity = 1;             ///< lambda of the face-fidelity residual
-  /// Closest point of the reference to each face's centroid (by face index): the fidelity
-  /// residual's tangent plane.
-  std::vector<TriangleBvh::Hit> centroid_hits;
 };
 
-/// Where the vertices go (by vertex index; fixed vertices where they are), before they are put
-/// back onto the surface. Runs on `threads` threads (Jacobian evaluation and factorisation).
+/// Where the vertices go (by vertex index), before they are put back onto the surface. Only the
+/// corners of the statistic's tail (faces weighing more than 1) move, with every face around them
+/// in the problem; the other vertices stay where they are. Runs on `threads` threads (Jacobian evaluation and factorisation).
 std::vector<Vec3> relocate_on_surface(const TriMesh& mesh, const SurfaceConstraints& constraints,
                                       const RelocationWeights& weights, int threads);
 
