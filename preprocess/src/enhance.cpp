@@ -32,13 +32,17 @@ using Points = std::vector<TriMesh::Point>;
 Points points_of(const TriMesh& mesh) { return Points(mesh.points(), mesh.points() + mesh.n_vertices()); }
 
 // One sweep of the least-squares fit to the reference along the normals (surface_fit.h): the
-// charts and the projection put vertices on the surface, the fit puts the faces on it. Vertices on
-// features stay on their lines.
-void fit_surface_vertices(TriMesh& mesh, const detail::SurfaceConstraints& constraints, double min_angle_cosine) {
-  const Points before = points_of(mesh);
-  detail::fit_to_reference(mesh, constraints.reference_bvh(), min_angle_cosine);
-  for (const auto v : mesh.vertices())
-    if (constraints.role(v) != detail::VertexRole::Surface) mesh.set_point(v, before[static_cast<std::size_t>(v.idx())]);
+// charts and the projection put vertices on the surface, the fit puts the faces on it. Only
+// vertices on no feature are fitted (the others stay on their lines), and only those that moved
+// since `since` when it is given.
+void fit_surface_vertices(TriMesh& mesh, const detail::SurfaceConstraints& constraints, double min_angle_cosine,
+                          const Points* since = nullptr) {
+  std::vector<char> movable(mesh.n_vertices(), 0);
+  for (const auto v : mesh.vertices()) {
+    const std::size_t i = static_cast<std::size_t>(v.idx());
+    movable[i] = constraints.role(v) == detail::VertexRole::Surface && (!since || mesh.point(v) != (*since)[i]);
+  }
+  detail::fit_to_reference(mesh, constraints.reference_bvh(), min_angle_cosine, &movable);
 }
 
 void check(const EnhanceParams& params, const TriMesh& mesh) {
@@ -102,7 +106,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
       if (constraints.role(v) != detail::VertexRole::Fixed && moved[i] != to_eigen(before[i]))
         mesh.set_point(v, to_openmesh(constraints.project(v, moved[i])));
     }
-    fit_surface_vertices(mesh, constraints, min_angle_cosine);
+    fit_surface_vertices(mesh, constraints, min_angle_cosine, &before);
     result.undone_moves += guards.enforce(mesh);
     if (params.progress) params.progress(static_cast<double>(round) / static_cast<double>(params.iterations));
     const QualityTail now = detail::measure_tail(mesh, params.target_min_angle_deg);

@@ -35,10 +35,12 @@ bool move_keeps_shape(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to,
 
 }  // namespace
 
-std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine) {
+std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine,
+                             const std::vector<char>* movable) {
   std::size_t moved = 0;
   for (const VertexHandle v : mesh.vertices()) {
     if (mesh.status(v).deleted() || mesh.is_boundary(v) || !mesh.is_manifold(v) || mesh.valence(v) < 3) continue;
+    if (movable && !(*movable)[static_cast<std::size_t>(v.idx())]) continue;
     const Vec3 x = point(mesh, v);
     double shortest = std::numeric_limits<double>::infinity();
     for (const VertexHandle w : mesh.vv_range(v)) shortest = std::min(shortest, (point(mesh, w) - x).norm());

@@ -7,6 +7,7 @@
 #include "meshprep/quality/triangle_bvh.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace meshprep::detail {
 
@@ -16,7 +17,9 @@ namespace meshprep::detail {
 /// with w = 2/3), c_s the closest point of `reference` to p_s and w_s the barycentric weight of v
 /// at p_s. The step is capped at a quarter of the shortest edge at v and refused if a face would
 /// turn by more than 30 degrees or a smallest angle would drop below min(the angle whose cosine is
-/// `min_angle_cosine`, its value before). Returns the number of vertices moved.
-std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine);
+/// `min_angle_cosine`, its value before). Only vertices flagged in `movable` (by vertex index) are
+/// fitted when it is given. Returns the number of vertices moved.
+std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine,
+                             const std::vector<char>* movable = nullptr);
 
 }  // namespace meshprep::detail
