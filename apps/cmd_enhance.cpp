@@ -8,7 +8,6 @@
 #include "meshprep/preprocess/enhance.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/report_writers.h"
-#include "meshprep/quality/self_intersections.h"
 
 #include <iostream>
 #include <memory>
@@ -55,7 +54,7 @@ int run_enhance(EnhanceOptions o) {
   QualityReport quality = analyze_quality(output, QualityParams(), &against);
   quality.path = o.output;
   quality.reference->path = reference ? o.reference : o.input;
-  refuse_new_intersections(quality, find_self_intersections(loaded.soup).count, o.input, "enhanced",
+  refuse_new_intersections(quality, result.input_self_intersections, o.input, "enhanced",
                            "Use --no-flips or a smaller --max-deviation");
   write_soup(output, o.output);
 

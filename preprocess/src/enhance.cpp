@@ -72,6 +72,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
   EnhanceResult result;
+  result.input_self_intersections = allowed_intersections;
   for (const auto v : mesh.vertices()) {
     if (constraints.role(v) == detail::VertexRole::Line) ++result.line_vertices;
     if (constraints.role(v) == detail::VertexRole::Fixed) ++result.fixed_vertices;
@@ -90,7 +91,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
       const detail::CleanupRules rules{params.flip_dihedral_deg, max_deviation, min_angle_cosine};
       const std::size_t flips = detail::flip_for_angles(mesh, constraints, rules);
       const std::size_t removed = detail::collapse_for_angles(mesh, constraints, rules, removal_budget - removed_vertices);
-      if (find_self_intersections(soup_from_mesh(mesh)).count > allowed_intersections) {
+      if (flips + removed > 0 && find_self_intersections(soup_from_mesh(mesh)).count > allowed_intersections) {
         mesh = before_cleanup;
       } else {
         flips_made += flips;

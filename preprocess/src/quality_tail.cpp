@@ -12,25 +12,18 @@ struct FaceQuality {
   std::vector<double> q, min_angle_deg;
 };
 
+// Per face, in face order (the mesh has no deleted faces): q and the smallest angle, both 0 for a
+// degenerate face. The shapes come from the quality module (parallel over faces).
 FaceQuality face_quality(const TriMesh& mesh) {
   FaceQuality quality;
-  quality.q.reserve(mesh.n_faces());
-  quality.min_angle_deg.reserve(mesh.n_faces());
-  for (const auto f : mesh.faces()) {
-    Vec3 p[3];
-    int k = 0;
-    for (const auto v : mesh.fv_range(f)) p[k++] = to_eigen(mesh.point(v));
-    const TriangleShape shape = triangle_shape(p[0], p[1], p[2]);
+  for (const TriangleShape& shape : triangle_shapes(soup_from_mesh(mesh))) {
     quality.q.push_back(shape.degenerate ? 0.0 : 1.0 / shape.radius_ratio);
     quality.min_angle_deg.push_back(shape.degenerate ? 0.0 : shape.min_angle_deg);
   }
   return quality;
 }
 
-}  // namespace
-
-QualityTail measure_tail(const TriMesh& mesh, double target_min_angle_deg) {
-  const FaceQuality quality = face_quality(mesh);
+QualityTail summarize(const FaceQuality& quality, double target_min_angle_deg) {
   QualityTail tail;
   const double n = static_cast<double>(quality.q.size());
   if (quality.q.empty()) return tail;
@@ -48,9 +41,15 @@ QualityTail measure_tail(const TriMesh& mesh, double target_min_angle_deg) {
   return tail;
 }
 
+}  // namespace
+
+QualityTail measure_tail(const TriMesh& mesh, double target_min_angle_deg) {
+  return summarize(face_quality(mesh), target_min_angle_deg);
+}
+
 std::vector<double> tail_weights(const TriMesh& mesh, const EnhanceParams& params) {
   const FaceQuality quality = face_quality(mesh);
-  const QualityTail tail = measure_tail(mesh, params.target_min_angle_deg);
+  const QualityTail tail = summarize(quality, params.target_min_angle_deg);
   const double tau = tail.mean_q - params.tail_k * tail.stddev_q;
   std::vector<double> weights(quality.q.size(), 1.0);
   for (std::size_t f = 0; f < weights.size(); ++f) {

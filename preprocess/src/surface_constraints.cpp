@@ -15,16 +15,9 @@ constexpr std::size_t kShortestCrease = 5;                        // edges
 
 Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
 
-Vec3 face_normal(const TriMesh& mesh, TriMesh::FaceHandle f) {
-  auto h = mesh.halfedge_handle(f);
-  const Vec3 a = point(mesh, mesh.from_vertex_handle(h)), b = point(mesh, mesh.to_vertex_handle(h));
-  const Vec3 c = point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
-  return (b - a).cross(c - a);
-}
-
 bool sharp(const TriMesh& mesh, EdgeHandle e, double cos_feature) {
-  const Vec3 n0 = face_normal(mesh, mesh.face_handle(mesh.halfedge_handle(e, 0)));
-  const Vec3 n1 = face_normal(mesh, mesh.face_handle(mesh.halfedge_handle(e, 1)));
+  const Vec3 n0 = to_eigen(mesh.calc_face_normal(mesh.face_handle(mesh.halfedge_handle(e, 0))));
+  const Vec3 n1 = to_eigen(mesh.calc_face_normal(mesh.face_handle(mesh.halfedge_handle(e, 1))));
   const double norms = n0.norm() * n1.norm();
   return norms > 0 && n0.dot(n1) < cos_feature * norms;
 }

@@ -57,6 +57,7 @@ struct EnhanceResult {
   std::size_t line_vertices = 0;        ///< on a crease or the boundary: slid along it
   std::size_t fixed_vertices = 0;       ///< corners and non-manifold vertices: kept
   std::size_t undone_moves = 0;         ///< vertex moves taken back by the guards
+  std::size_t input_self_intersections = 0;  ///< intersecting face pairs of the input (the guards allow no more)
   QualityTail before, after;
   double seconds = 0;
 };
