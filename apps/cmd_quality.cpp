@@ -67,7 +67,7 @@ int run_quality(const QualityOptions& o) {
   json["input"] = describe_input(soup, read);
   if (!o.csv.empty()) write_csv(o.csv, soup, report);
   if (!o.vtk.empty()) write_vtk(o.vtk, soup, report);
-  if (!o.html.empty()) write_html(o.html, report);
+  if (!o.html.empty()) write_html(o.html, soup, report);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") write_text_summary(std::cout, report);
 

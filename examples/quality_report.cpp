@@ -45,9 +45,9 @@ int quality_report(const std::string& mesh_path, const std::string& prefix) {
   const std::string json_path = prefix + ".json";
   write_file_atomically(json_path, [&](std::ostream& out) { out << to_json(report).dump(2) << '\n'; });
 
-  // 5. The HTML page.
+  // 5. The HTML page, with pictures of the surface coloured by radius ratio.
   const std::string html_path = prefix + ".html";
-  write_html(html_path, report);
+  write_html(html_path, soup, report);
   std::cout << "wrote " << json_path << " and " << html_path << '\n';
   return kSuccess;
 }

@@ -7,10 +7,12 @@ packages=(
   cmake g++ make pkg-config
   libeigen3-dev libopenmesh-dev libtet1.5-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev
+  nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev libpng-dev
   python3
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy
+  # the browser that renders the HTML reports in the tests
+  chromium
 )
 
 missing=()

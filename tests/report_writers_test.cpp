@@ -110,6 +110,12 @@ std::string read_file(const fs::path& path) {
   return content.str();
 }
 
+std::size_t count_occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
@@ -377,14 +383,14 @@ TEST_F(ReportFiles, VtkIsBinaryPolydataWithFaceMetricsAndVertexVariation) {
 TEST_F(ReportFiles, HtmlIsOneSelfContainedPageWithHistograms) {
   QualityReport report = two_triangle_report();
   report.reference = reference_comparison();
-  write_html(file("report.html"), report);
+  write_html(file("report.html"), two_triangles(), report);
   const std::string html = read_file(file("report.html"));
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("two_triangles.off"), std::string::npos);
-  EXPECT_NE(html.find("<svg"), std::string::npos);
-  std::size_t histograms = 0;
-  for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++histograms;
-  EXPECT_EQ(histograms, 5u);
+  EXPECT_EQ(count_occurrences(html, "<svg"), 6u);  // one per metric, and the colour legend of the pictures
+  // The surface is open (one view), drawn by meshprep as an inline PNG.
+  EXPECT_EQ(count_occurrences(html, "<img "), 1u);
+  EXPECT_NE(html.find("src=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);  // the PNG signature
   // Self-contained: nothing fetched.
   EXPECT_EQ(html.find("http://"), std::string::npos);
   EXPECT_EQ(html.find("https://"), std::string::npos);
@@ -401,7 +407,7 @@ TEST_F(ReportFiles, HtmlIsOneSelfContainedPageWithHistograms) {
 TEST_F(ReportFiles, HtmlEscapesTheFileName) {
   QualityReport report = two_triangle_report();
   report.path = "a<b>&c.off";
-  write_html(file("report.html"), report);
+  write_html(file("report.html"), two_triangles(), report);
   const std::string html = read_file(file("report.html"));
   EXPECT_NE(html.find("a&lt;b&gt;&amp;c.off"), std::string::npos);
   EXPECT_EQ(html.find("a<b>&c.off"), std::string::npos);
@@ -412,7 +418,7 @@ TEST_F(ReportFiles, HtmlOfAnEmptyReportIsWritten) {
   constexpr Distribution empty{kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, 0};
   report.radius_ratio = report.aspect_ratio = report.min_angle_deg = report.max_angle_deg = empty;
   report.area_distribution = empty;
-  EXPECT_NO_THROW(write_html(file("report.html"), report));
+  EXPECT_NO_THROW(write_html(file("report.html"), TriangleSoup(), report));
   EXPECT_NE(read_file(file("report.html")).find("(in-memory mesh)"), std::string::npos);
 }
 
@@ -424,7 +430,7 @@ TEST_F(ReportFiles, WritersIntoAMissingDirectoryThrowIoError) {
   const std::string missing = (dir_ / "no_such_directory").string();
   EXPECT_THROW(write_csv(missing + "/faces.csv", soup, report), IoError);
   EXPECT_THROW(write_vtk(missing + "/faces.vtk", soup, report), IoError);
-  EXPECT_THROW(write_html(missing + "/report.html", report), IoError);
+  EXPECT_THROW(write_html(missing + "/report.html", soup, report), IoError);
   EXPECT_FALSE(fs::exists(missing));
 }
 

@@ -2,12 +2,13 @@
 // file also holds the per-vertex surface variation, the paper's "curvature analysis" picture.
 
 #include "meshprep/quality/report_writers.h"
-#include "meshprep/quality/surface_variation.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/quality/number_format.h"
+#include "meshprep/quality/surface_variation.h"
 
-#include "number_format.h"
+#include "face_metrics.h"
 
 #include <cstdint>
 #include <cstring>
@@ -16,24 +17,9 @@
 namespace meshprep {
 namespace {
 
-/// A double-valued per-face metric: its column / array name and its TriangleShape field.
-struct FaceMetric {
-  const char* name;
-  double TriangleShape::*field;
-};
-
-constexpr FaceMetric kFaceMetrics[] = {{"radius_ratio", &TriangleShape::radius_ratio},
-                                       {"aspect_ratio", &TriangleShape::aspect_ratio},
-                                       {"min_angle_deg", &TriangleShape::min_angle_deg},
-                                       {"max_angle_deg", &TriangleShape::max_angle_deg},
-                                       {"area", &TriangleShape::area}};
-
-void require_one_shape_per_face(const std::string& path, const TriangleSoup& soup, const QualityReport& report) {
-  if (report.face_shapes.size() != soup.triangles.size()) {
-    throw InvalidInput(path + ": the quality report has " + std::to_string(report.face_shapes.size()) +
-                       " face shapes for a mesh of " + std::to_string(soup.triangles.size()) + " faces");
-  }
-}
+using detail::FaceMetric;
+using detail::kFaceMetrics;
+using detail::require_one_shape_per_face;
 
 // ---- CSV ------------------------------------------------------------------------------------
 
@@ -46,7 +32,7 @@ std::string csv_header() {
 std::string csv_row(std::size_t face, const Triangle& t, const TriangleShape& shape) {
   std::string row = std::to_string(face);
   for (std::uint32_t v : t) row += ',' + std::to_string(v);
-  for (const FaceMetric& metric : kFaceMetrics) row += ',' + detail::format_number(shape.*metric.field, 9);
+  for (const FaceMetric& metric : kFaceMetrics) row += ',' + format_number(shape.*metric.field, 9);
   row += shape.degenerate ? ",1\n" : ",0\n";
   return row;
 }

@@ -1,16 +1,15 @@
-// svg_histogram: a bar chart as inline SVG, drawn with plain elements (no script, no external resource).
+// svg_histogram and escape: a bar chart as inline SVG, drawn with plain elements (no script, no external resource).
 
-#include "svg_histogram.h"
+#include "meshprep/quality/html_report.h"
 
 #include "meshprep/core/errors.h"
-
-#include "number_format.h"
+#include "meshprep/quality/number_format.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace meshprep::detail {
+namespace meshprep::html {
 namespace {
 
 constexpr double kMarginLeft = 58, kMarginRight = 12, kMarginTop = 30, kMarginBottom = 44;
@@ -89,7 +88,7 @@ Frame make_frame(const HistogramOptions& o, double ymax) {
 void bar(std::ostream& svg, double x0, double x1, double y, double bottom, const std::string& fill,
          const std::string& tooltip, double top) {
   // A transparent full-height rectangle makes the tooltip reachable even for empty bins.
-  svg << "<g><title>" << xml_escape(tooltip) << "</title>"
+  svg << "<g><title>" << escape(tooltip) << "</title>"
       << "<rect x=\"" << px(x0) << "\" y=\"" << px(top) << "\" width=\"" << px(x1 - x0) << "\" height=\""
       << px(bottom - top) << "\" fill=\"#000\" fill-opacity=\"0\"/>"
       << "<rect x=\"" << px(x0) << "\" y=\"" << px(y) << "\" width=\"" << px(x1 - x0) << "\" height=\""
@@ -113,7 +112,7 @@ void draw_overflow(std::ostream& svg, const Bins& bins, const Frame& f, const Hi
   const double x0 = f.overflow_left();
   bar(svg, x0, x0 + kOverflowWidth, f.y(static_cast<double>(bins.overflow)), f.bottom, "#c0504d", tooltip, f.top);
   svg << "<text x=\"" << px(x0 + kOverflowWidth / 2) << "\" y=\"" << px(f.bottom + 14)
-      << "\" text-anchor=\"middle\" fill=\"#c0504d\">" << xml_escape(label) << "</text>\n";
+      << "\" text-anchor=\"middle\" fill=\"#c0504d\">" << escape(label) << "</text>\n";
 }
 
 void draw_axes(std::ostream& svg, const Frame& f, const HistogramOptions& o) {
@@ -130,9 +129,9 @@ void draw_axes(std::ostream& svg, const Frame& f, const HistogramOptions& o) {
   svg << "<line x1=\"" << px(f.left) << "\" x2=\"" << px(f.right) << "\" y1=\"" << px(f.bottom) << "\" y2=\""
       << px(f.bottom) << "\" stroke=\"#333\"/>\n"
       << "<text x=\"" << px((f.left + f.right) / 2) << "\" y=\"" << px(o.height - 6.0)
-      << "\" text-anchor=\"middle\">" << xml_escape(o.x_label) << "</text>\n"
+      << "\" text-anchor=\"middle\">" << escape(o.x_label) << "</text>\n"
       << "<text transform=\"translate(14," << px((f.top + f.bottom) / 2)
-      << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(o.unit) << "</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(o.unit) << "</text>\n";
 }
 
 // Where a marker is drawn: at its value, at the overflow bar beyond hi, at an edge otherwise.
@@ -150,7 +149,7 @@ void draw_markers(std::ostream& svg, const Frame& f, const HistogramOptions& o) 
       svg << "<line x1=\"" << px(x) << "\" x2=\"" << px(x) << "\" y1=\"" << px(row_y + 2) << "\" y2=\""
           << px(f.bottom) << "\" stroke=\"#d9822b\" stroke-width=\"1.5\" stroke-dasharray=\"4 3\"/>"
           << "<text x=\"" << px(left_of_line ? x - 3 : x + 3) << "\" y=\"" << px(row_y) << "\" text-anchor=\""
-          << (left_of_line ? "end" : "start") << "\" fill=\"#a85a12\">" << xml_escape(m.label) << ' '
+          << (left_of_line ? "end" : "start") << "\" fill=\"#a85a12\">" << escape(m.label) << ' '
           << format_number(m.value, 4) << "</text>\n";
     }
     row_y += kMarkerRow;
@@ -158,7 +157,7 @@ void draw_markers(std::ostream& svg, const Frame& f, const HistogramOptions& o) 
 }
 
 void draw_title(std::ostream& svg, const Bins& bins, const HistogramOptions& o) {
-  svg << "<text x=\"8\" y=\"16\" font-size=\"13\" font-weight=\"bold\">" << xml_escape(o.title);
+  svg << "<text x=\"8\" y=\"16\" font-size=\"13\" font-weight=\"bold\">" << escape(o.title);
   if (bins.undefined > 0)
     svg << "<tspan font-size=\"11\" font-weight=\"normal\" fill=\"#666\"> (" << bins.undefined << " undefined, not shown)</tspan>";
   svg << "</text>\n";
@@ -181,7 +180,7 @@ std::string svg_histogram(const std::vector<double>& values, const HistogramOpti
 
   std::ostringstream svg;
   svg << "<svg class=\"histogram\" width=\"" << options.width << "\" height=\"" << options.height << "\" viewBox=\"0 0 "
-      << options.width << ' ' << options.height << "\" role=\"img\" aria-label=\"" << xml_escape(options.title)
+      << options.width << ' ' << options.height << "\" role=\"img\" aria-label=\"" << escape(options.title)
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
   draw_title(svg, bins, options);
   draw_axes(svg, frame, options);
@@ -192,7 +191,7 @@ std::string svg_histogram(const std::vector<double>& values, const HistogramOpti
   return svg.str();
 }
 
-std::string xml_escape(const std::string& text) {
+std::string escape(const std::string& text) {
   std::string escaped;
   escaped.reserve(text.size());
   for (char c : text) {
@@ -208,4 +207,4 @@ std::string xml_escape(const std::string& text) {
   return escaped;
 }
 
-}  // namespace meshprep::detail
+}  // namespace meshprep::html

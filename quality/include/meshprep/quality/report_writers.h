@@ -3,7 +3,7 @@
 /// Ways to present a QualityReport: JSON (the machine interface; keys are stable), a text summary
 /// table, a per-face CSV, a VTK file for ParaView with every per-face metric as cell data and the
 /// per-vertex surface variation as point data, and one self-contained HTML page with inline SVG
-/// histograms. File writers are atomic.
+/// histograms and pictures of the surface. File writers are atomic.
 
 #include "meshprep/core/mesh.h"
 #include "meshprep/quality/report.h"
@@ -29,7 +29,12 @@ void write_csv(const std::string& path, const TriangleSoup& soup, const QualityR
 /// scalars "surface_variation".
 void write_vtk(const std::string& path, const TriangleSoup& soup, const QualityReport& report);
 
-/// One self-contained page: the summary, checks in green/red, an SVG histogram per metric.
-void write_html(const std::string& path, const QualityReport& report);
+/// The same data as write_vtk in VTK's XML unstructured-grid format (.vtu: triangles, cell data
+/// per metric plus "degenerate", point data "surface_variation"), which ParaView and meshio read.
+void write_vtu(const std::string& path, const TriangleSoup& soup, const QualityReport& report);
+
+/// One self-contained page: checks in green/red, pictures of `soup` coloured by radius ratio
+/// (surface_picture.h), the summary, an SVG histogram per metric.
+void write_html(const std::string& path, const TriangleSoup& soup, const QualityReport& report);
 
 }  // namespace meshprep

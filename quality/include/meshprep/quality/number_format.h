@@ -1,12 +1,12 @@
 #pragma once
 /// \file number_format.h
-/// Locale-independent number formatting shared by the report writers (private to the module).
+/// Locale-independent number formatting shared by the report writers.
 
 #include <charconv>
 #include <cmath>
 #include <string>
 
-namespace meshprep::detail {
+namespace meshprep {
 
 /// `v` with `significant` significant digits, like printf's %.<significant>g but independent of
 /// the C locale; non-finite values are written "inf", "-inf" and "nan".
@@ -34,4 +34,4 @@ inline std::string format_fixed(double v, int decimals) {
   return {buffer, result.ptr};
 }
 
-}  // namespace meshprep::detail
+}  // namespace meshprep
