@@ -7,12 +7,12 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/reconstruct.h"
+#include "meshprep/preprocess/variation_rule.h"
 #include "meshprep/quality/json_values.h"
 
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace meshprep::cli {
@@ -27,29 +27,9 @@ struct ReconstructOptions {
   std::string variation_threshold = "p90";
 };
 
-// "0.3" is a fixed sigma threshold, "p90" the 90th percentile of the patches' sigma; empty if
-// the text is neither.
-struct VariationRule {
-  bool percentile = false;
-  double value = 0;
-};
-
-std::optional<VariationRule> parse_variation_rule(const std::string& text) {
-  VariationRule rule;
-  rule.percentile = !text.empty() && text[0] == 'p';
-  const std::string number = text.substr(rule.percentile ? 1 : 0);
-  try {
-    std::size_t used = 0;
-    rule.value = std::stod(number, &used);
-    if (used == number.size() && rule.value >= 0 && (!rule.percentile || rule.value <= 100)) return rule;
-  } catch (const std::exception&) {
-  }
-  return std::nullopt;
-}
-
 std::string check_variation_rule(const std::string& text) {
-  if (parse_variation_rule(text)) return {};
-  return "expected a sigma threshold >= 0 (e.g. 0.3) or a percentile p0..p100 (e.g. p90), not '" + text + "'";
+  PartitionOfUnityParams scratch;
+  return apply_variation_rule(text, scratch) ? std::string() : variation_rule_error(text);
 }
 
 int run_reconstruct(const ReconstructOptions& o) {
@@ -66,9 +46,7 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.fit.leaf_size = o.leaf_size;
   params.fit.neighbors = o.neighbors;
   params.fit.variation_growth = o.variation_growth;
-  const VariationRule rule = *parse_variation_rule(o.variation_threshold);  // checked by CLI11
-  params.fit.variation_percentile = rule.percentile ? rule.value : -1;
-  params.fit.variation_threshold = rule.value;
+  apply_variation_rule(o.variation_threshold, params.fit);  // checked by CLI11
   ProgressBar bar("reconstruct");
   params.progress = [&bar](double fraction) { bar.update(fraction); };
   const auto start = std::chrono::steady_clock::now();

@@ -28,7 +28,6 @@
 #include "meshprep/preprocess/reconstruct.h"
 #include "meshprep/preprocess/simplify.h"
 #include "meshprep/quality/surface_distance.h"
-#include "meshprep/quality/topology.h"
 
 #include <cmath>
 #include <iostream>
@@ -42,9 +41,6 @@ using namespace meshprep::examples;
 // The base of the block lies this fraction of the terrain's bounding-box diagonal below its
 // lowest point (a relative depth fits a 30 km terrain and a 30 m one alike).
 constexpr double kBaseDepthRelative = 0.05;
-// Doublings of the widest gap the reconstruction bridges before giving up (extrude_to_block then
-// refuses the terrain, naming its boundary loops).
-constexpr int kMaxGapWidenings = 8;
 
 int terrain_to_tets(const std::string& points_path, const std::string& output_path, std::size_t target_faces) {
   // 1. Read the scattered samples.
@@ -52,19 +48,15 @@ int terrain_to_tets(const std::string& points_path, const std::string& output_pa
   std::cout << "1. read " << points.points.size() << " points from " << points_path << '\n';
 
   // 2. Reconstruct a surface over their footprint (the library's default 300 x 300 grid). The block
-  //    of step 5 needs a terrain with a single boundary loop: while the triangles left out over
-  //    gaps between the samples still make holes, bridge twice wider gaps.
+  //    of step 5 needs a terrain with a single boundary loop: the holes in the data are kept,
+  //    and listed, instead of left out.
   ReconstructParams reconstruct_params;
-  ReconstructResult reconstruction = reconstruct_surface(points.points, reconstruct_params);
-  for (int widening = 0; widening < kMaxGapWidenings && analyze_topology(reconstruction.mesh).boundary_loops > 1;
-       ++widening) {
-    reconstruct_params.max_gap = 2 * reconstruction.max_gap;
-    reconstruction = reconstruct_surface(points.points, reconstruct_params);
-  }
+  reconstruct_params.fill_holes = true;
+  const ReconstructResult reconstruction = reconstruct_surface(points.points, reconstruct_params);
   const TriangleSoup& terrain = reconstruction.mesh;
   std::cout << "2. reconstructed " << terrain.points.size() << " vertices, " << terrain.triangles.size()
-            << " faces (" << reconstruction.gap_triangles << " left out over gaps wider than "
-            << reconstruction.max_gap << ")\n";
+            << " faces (" << reconstruction.gap_triangles << " left out outside the footprint, "
+            << reconstruction.filled_faces.size() << " kept over holes in the data)\n";
 
   // 3. Simplify it to the target size.
   TriMesh surface = mesh_from_soup(terrain);

@@ -201,14 +201,22 @@ TEST(SharedPartitionOfUnity, JacksboroHeldOutPoints) {
   std::cout << "jacksboro held-out RMS " << rms << " m\n";
 }
 
-TEST(Reconstruct, AHoleInTheSampleStaysOpenAndTheMeshManifold) {
-  // A disc of radius 1 without the samples within 0.35 of (0.3, 0): the grid over the footprint
-  // must leave the hole (and the corners outside the disc) out, not paper over them.
+namespace {
+// A disc of radius 1 without the samples within 0.35 of (0.3, 0), on z = 0.1 x^2.
+std::vector<Vec3> holed_disc() {
   std::vector<Vec3> points;
   for (const Eigen::Vector2d& s : scattered(3000)) {
     if (s.norm() > 1 || (s - Eigen::Vector2d(0.3, 0)).norm() < 0.35) continue;
     points.emplace_back(s.x(), s.y(), 0.1 * s.x() * s.x());
   }
+  return points;
+}
+}  // namespace
+
+TEST(Reconstruct, AHoleInTheSampleStaysOpenAndTheMeshManifold) {
+  // A disc of radius 1 without the samples within 0.35 of (0.3, 0): the grid over the footprint
+  // must leave the hole (and the corners outside the disc) out, not paper over them.
+  const std::vector<Vec3> points = holed_disc();
   ReconstructParams params;
   params.columns = params.rows = 80;
   const ReconstructResult result = reconstruct_surface(points, params);
@@ -268,4 +276,28 @@ TEST(Reconstruct, AdaptiveMeshIsDenserWhereTheSurfaceBends) {
   };
   EXPECT_GT(on_bump(adaptive.mesh), 1.5 * on_bump(uniform.mesh));
   EXPECT_EQ(adaptive.vertex_variation.size(), adaptive.mesh.points.size());
+}
+
+TEST(Reconstruct, FillHolesKeepsAHoleInTheDataFlaggedAndLeavesOneBoundaryLoop) {
+  // The holed disc of the test above, with fill_holes: the hole (interior, away from the grid's
+  // border) is kept and its faces listed; the corners outside the disc reach the border and stay
+  // out, so the rim is the only boundary loop (what extrude_to_block needs).
+  const std::vector<Vec3> points = holed_disc();
+  ReconstructParams params;
+  params.columns = params.rows = 80;
+  params.fill_holes = true;
+  const ReconstructResult result = reconstruct_surface(points, params);
+  const QualityReport q = analyze_quality(result.mesh);
+  EXPECT_TRUE(q.manifold);
+  EXPECT_EQ(q.boundary_loops, 1u);
+  ASSERT_FALSE(result.filled_faces.empty());
+  EXPECT_EQ(result.filled_triangles, result.filled_faces.size());
+  // Every filled face lies in the hole, farther than max_gap from the samples around it.
+  for (const std::size_t f : result.filled_faces) {
+    const Triangle& t = result.mesh.triangles[f];
+    const Vec3 centre = (result.mesh.points[t[0]] + result.mesh.points[t[1]] + result.mesh.points[t[2]]) / 3.0;
+    EXPECT_LT((centre.head<2>() - Eigen::Vector2d(0.3, 0)).norm(), 0.35) << f;
+  }
+  // The corners of the footprint's square outside the disc stay out.
+  for (const Vec3& p : result.mesh.points) EXPECT_LT(p.head<2>().norm(), 1 + 2 * result.max_gap);
 }

@@ -3,6 +3,8 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/simplify.h"
 
+#include "grid_gaps.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -179,9 +181,14 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
   const GridTriangles cells{grid};
   std::vector<Triangle> triangles(cells.count());
   for (std::size_t t = 0; t < triangles.size(); ++t) triangles[t] = cells.corners(t);
-  std::vector<char> kept = near_samples(pu.sample_positions(), grid, result.max_gap);
+  std::vector<char> kept = near_samples(pu.sample_positions(), grid, result.max_gap), filled;
+  if (params.fill_holes) {
+    detail::fill_interior_gaps(grid, kept, filled);
+    detail::keep_largest_piece(grid, kept);
+  }
   result.gap_triangles = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 0));
   result.gap_triangles += drop_bowties(triangles, kept, heights.size());
+  if (params.fill_holes) result.gap_triangles += detail::keep_largest_piece(grid, kept);
 
   // Keep the vertices some triangle uses, in grid order.
   constexpr std::uint32_t unused = ~std::uint32_t(0);
@@ -200,11 +207,16 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
     }
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (!kept[t]) continue;
+    if (!filled.empty() && filled[t]) result.filled_faces.push_back(result.mesh.triangles.size());
     Triangle corners = triangles[t];
     for (std::uint32_t& v : corners) v = renumber[v];
     result.mesh.triangles.push_back(corners);
   }
-  if (params.adaptive) adapt_to_features(pu, params, result);
+  result.filled_triangles = result.filled_faces.size();
+  if (params.adaptive) {
+    adapt_to_features(pu, params, result);
+    result.filled_faces.clear();  // the faces are new; filled_triangles still counts the grid's
+  }
   return result;
 }
 

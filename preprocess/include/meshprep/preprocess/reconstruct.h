@@ -27,6 +27,12 @@ struct ReconstructParams {
   /// sigma and curvature are high, sparse where the surface is flat, for about the same number of
   /// faces as the uniform grid. Built by simplifying the twice finer grid (reconstruct.cpp).
   bool adaptive = false;
+  /// Keep the triangles over interior gaps (holes in the data: left-out regions that do not reach
+  /// the grid's border) and list them in ReconstructResult::filled_faces, and keep only the
+  /// largest connected piece, so that a disc-like footprint gives one boundary loop (what closing
+  /// the surface into a block needs). The surface over a filled gap is the partition of unity's
+  /// extrapolation: flagged, never silent.
+  bool fill_holes = false;
   std::function<void(double)> progress;  ///< called with the fraction done (the --adaptive simplification)
 };
 
@@ -35,7 +41,9 @@ struct ReconstructResult {
   std::size_t patches = 0;
   double max_gap = 0;            ///< the value used
   std::size_t columns = 0, rows = 0;  ///< the (uniform) grid's vertices along x and y
-  std::size_t gap_triangles = 0;  ///< left out: over a gap, or touching the rest at a vertex only
+  std::size_t gap_triangles = 0;  ///< left out: over a gap, touching the rest at a vertex only, or (fill_holes) a smaller piece
+  std::size_t filled_triangles = 0;       ///< fill_holes: kept over interior gaps (grid triangles)
+  std::vector<std::size_t> filled_faces;  ///< fill_holes: those faces' indices in `mesh` (empty with adaptive)
   Vec3 normal = Vec3::UnitZ();    ///< of the reference plane (the PCA frame of the points)
   double variation_threshold = 0;  ///< the sigma threshold applied
   std::size_t grown_patches = 0;  ///< patches whose support grew (sigma above the threshold)
