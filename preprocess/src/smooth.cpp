@@ -77,7 +77,14 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
     }
   }
   result.iterations = params.iterations;
-  if (keep_volume) restore_volume(mesh, *result.volume_before);
+  if (keep_volume) {
+    // The offset moves every vertex after the guard saw them: guard it too (the volume is then
+    // kept up to the few vertices put back).
+    const std::vector<TriMesh::Point> unrestored(mesh.points(), mesh.points() + mesh.n_vertices());
+    restore_volume(mesh, *result.volume_before);
+    if (result.input_self_intersections)
+      result.undone_vertices += detail::undo_new_intersections(mesh, unrestored, *result.input_self_intersections);
+  }
   if (result.volume_before) result.volume_after = volume(mesh);
   for (const auto v : mesh.vertices())
     result.max_displacement =
