@@ -13,9 +13,10 @@
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_bvh.h"
 
+#include <tbb/global_control.h>
+
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 namespace meshprep {
 
@@ -69,7 +70,9 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   // Each removed vertex takes two faces with it.
   const auto removal_budget = static_cast<std::size_t>(params.max_face_change * static_cast<double>(mesh.n_faces()) / 2);
   const double min_angle_cosine = std::cos(params.target_min_angle_deg * M_PI / 180.0);
-  const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // Ceres' threads: as many as TBB may use (a caller's tbb::global_control limits both).
+  const int threads = static_cast<int>(
+      std::max<std::size_t>(1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
 
   EnhanceResult result;
   result.input_self_intersections = allowed_intersections;
