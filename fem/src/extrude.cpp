@@ -3,6 +3,11 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/quality/topology.h"
 
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -30,6 +35,38 @@ std::vector<std::uint32_t> boundary_loop(const TriangleSoup& s) {
   if (v != first || loop.size() != next.size())
     throw InvalidInput("the surface's border is not a single simple loop (a boundary vertex is pinched)");
   return loop;
+}
+
+// The base: the surface's triangles projected onto the base plane (a height field projects to a
+// triangulation of its footprint), reversed to face down, then coarsened by OpenMesh's decimater:
+// halfedge collapses keep every vertex exactly in the plane, the border vertices are locked
+// (the walls stand on them), no triangle may flip, and none may get thinner than an aspect ratio
+// of 5. TetGen's own triangulation of the footprint as one polygon asserts on the nearly
+// collinear corners of a simplified border (sscoutsegment; measured on the Jacksboro terrain),
+// and the uncoarsened projection doubles the tets.
+TriMesh coarse_base(const TriangleSoup& surface, const std::vector<std::uint32_t>& below, const SurfacePlc& plc) {
+  TriMesh base;
+  std::vector<TriMesh::VertexHandle> handle(surface.points.size());
+  for (std::size_t v = 0; v < surface.points.size(); ++v)
+    if (below[v] != UINT32_MAX) handle[v] = base.add_vertex(to_openmesh(plc.points[below[v]]));
+  for (const Triangle& t : surface.triangles) base.add_face(handle[t[0]], handle[t[2]], handle[t[1]]);
+  for (const auto v : base.vertices())
+    if (base.is_boundary(v)) base.status(v).set_locked(true);
+  base.update_face_normals();  // ModNormalFlipping compares against them
+  using Decimater = OpenMesh::Decimater::DecimaterT<TriMesh>;
+  Decimater decimater(base);
+  OpenMesh::Decimater::ModQuadricT<TriMesh>::Handle quadric;
+  OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle no_flips;
+  OpenMesh::Decimater::ModAspectRatioT<TriMesh>::Handle shape;
+  decimater.add(quadric);
+  decimater.add(no_flips);
+  decimater.add(shape);
+  decimater.module(quadric).unset_max_err();
+  decimater.module(shape).set_aspect_ratio(5.0f);
+  decimater.initialize();
+  decimater.decimate();
+  base.garbage_collection();
+  return base;
 }
 
 }  // namespace
@@ -61,7 +98,7 @@ SurfacePlc extrude_to_block(const TriangleSoup& surface, double depth) {
                          std::string(1, "xyz"[axis]) + " axis, so it cannot be extruded into a block");
   }
 
-  // Points: the referenced surface points, then one base point under each boundary vertex.
+  // Points: the referenced surface points, then their projections onto the base plane.
   SurfacePlc plc;
   std::vector<std::uint32_t> renumber(surface.points.size(), UINT32_MAX);
   double lowest = std::numeric_limits<double>::infinity();
@@ -77,24 +114,44 @@ SurfacePlc extrude_to_block(const TriangleSoup& surface, double depth) {
     plc.facets.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
     plc.tags.push_back(kTopTag);
   }
-  const std::vector<std::uint32_t> loop = boundary_loop(surface);
-  std::vector<std::uint32_t> below(loop.size());
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec3& p = surface.points[loop[i]];
-    below[i] = static_cast<std::uint32_t>(plc.points.size());
-    Vec3 q = p;
-    q[axis] = up[axis] * base_level;  // exactly on the base plane
-    plc.points.push_back(q);
+  // Side walls: one vertical quad per border edge (planar: it contains the edge and `up`), on
+  // base points right below the border vertices.
+  std::vector<std::uint32_t> below(surface.points.size(), UINT32_MAX);
+  SurfacePlc projected;  // every referenced point on the base plane, for coarse_base
+  projected.points.resize(surface.points.size());
+  for (std::size_t v = 0; v < surface.points.size(); ++v) {
+    if (renumber[v] == UINT32_MAX) continue;
+    below[v] = static_cast<std::uint32_t>(v);
+    projected.points[v] = surface.points[v];
+    projected.points[v][axis] = up[axis] * base_level;  // exactly on the base plane
   }
-  // Side walls: one vertical quad per border edge (planar: it contains the edge and `up`).
+  const TriMesh base = coarse_base(surface, below, projected);
+  std::vector<std::uint32_t> base_index(base.n_vertices());
+  for (const auto v : base.vertices()) {
+    base_index[static_cast<std::size_t>(v.idx())] = static_cast<std::uint32_t>(plc.points.size());
+    plc.points.push_back(to_eigen(base.point(v)));
+  }
+  // The border vertices are locked: the base keeps them, and a border point of the surface is
+  // found again by its position.
+  std::map<std::array<double, 3>, std::uint32_t> base_at;
+  for (const auto v : base.vertices())
+    if (base.is_boundary(v)) {
+      const Vec3 p = to_eigen(base.point(v));
+      base_at[{p.x(), p.y(), p.z()}] = base_index[static_cast<std::size_t>(v.idx())];
+    }
+  auto below_of = [&](std::uint32_t v) { return base_at.at({projected.points[v].x(), projected.points[v].y(), projected.points[v].z()}); };
+  const std::vector<std::uint32_t> loop = boundary_loop(surface);
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    const std::size_t j = (i + 1) % loop.size();
-    plc.facets.push_back({renumber[loop[j]], renumber[loop[i]], below[i], below[j]});
+    const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+    plc.facets.push_back({renumber[b], renumber[a], below_of(a), below_of(b)});
     plc.tags.push_back(kSideTag);
   }
-  // Base: the projected loop as one planar polygon, reversed so that it faces down.
-  plc.facets.emplace_back(below.rbegin(), below.rend());
-  plc.tags.push_back(kBaseTag);
+  for (const auto f : base.faces()) {
+    std::vector<std::uint32_t> corners;
+    for (const auto v : base.fv_range(f)) corners.push_back(base_index[static_cast<std::size_t>(v.idx())]);
+    plc.facets.push_back(corners);
+    plc.tags.push_back(kBaseTag);
+  }
   return plc;
 }
 
