@@ -46,5 +46,6 @@ Action add_simplify_command(CLI::App& app);
 Action add_reconstruct_command(CLI::App& app);
 Action add_smooth_command(CLI::App& app);
 Action add_enhance_command(CLI::App& app);
+Action add_pipeline_command(CLI::App& app);
 
 }  // namespace meshprep::cli

@@ -11,7 +11,8 @@ using namespace meshprep;
 int main(int argc, char** argv) {
   CLI::App app{"meshprep " MESHPREP_VERSION
                " - turn raw geometry into meshes a finite-element solver can trust.\n"
-               "Exit codes: 0 success, 1 the work could not be done (with the reason), 2 bad usage or unreadable input."};
+               "Exit codes: 0 success, 1 the work could not be done (with the reason), 2 bad usage or unreadable input.",
+               "meshprep"};
   app.set_version_flag("--version", "meshprep " MESHPREP_VERSION);
   app.require_subcommand(1);
   app.fallthrough(false);
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   add(cli::add_smooth_command);
   add(cli::add_enhance_command);
   add(cli::add_tetrahedralize_command);
+  add(cli::add_pipeline_command);
   CLI::App* help = app.add_subcommand("help", "Show this help");
 
   try {

@@ -5,32 +5,9 @@
 set -uo pipefail
 bin=$1
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; cat err.txt 2>/dev/null; }
-expect_exit() { [ "$2" = "$3" ] && ok || bad "$1: exit $3, expected $2"; }
+source "$here/cli_harness.sh"
 
-python3 - <<'PY'
-# A closed cube (12 triangles), the same cube without its top, two interpenetrating cubes,
-# a cube with a duplicated face.
-import itertools
-P = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
-T = [(0,2,1),(1,2,3),(4,5,6),(5,7,6),(0,1,4),(1,5,4),(2,6,3),(3,6,7),(0,4,2),(2,4,6),(1,3,5),(3,7,5)]
-def off(name, pts, tris):
-    with open(name, "w") as f:
-        f.write(f"OFF\n{len(pts)} {len(tris)} 0\n")
-        for p in pts: f.write("%r %r %r\n" % p)
-        for t in tris: f.write("3 %d %d %d\n" % t)
-off("cube.off", P, T)
-off("open_box.off", P, [t for t in T if t not in ((4,5,6),(5,7,6))])
-Q = [(x + 0.5, y + 0.25, z + 0.3) for (x, y, z) in P]
-off("two_boxes.off", P + Q, T + [tuple(i + 8 for i in t) for t in T])
-off("duplicate.off", P, T + [T[3]])
-off("fin.off", P + [(0.5, 0.5, -1.0)], T + [(0, 1, 8)])
-PY
+python3 "$here/cli_meshes.py" cube open_box two_boxes duplicate fin
 
 "$bin" tetrahedralize cube.off -o cube.msh --max-volume 0.01 --json out.json > stdout.txt 2> err.txt
 expect_exit "cube" 0 $?
@@ -79,20 +56,7 @@ else
 fi
 
 # A terrain-like open surface closes into a block with --extrude-base.
-python3 - <<'PY'
-import math
-n = 8
-pts = [(i, j, 0.3 * math.sin(i) * math.cos(j)) for j in range(n + 1) for i in range(n + 1)]
-tris = []
-for j in range(n):
-    for i in range(n):
-        a, b, c, d = j*(n+1)+i, j*(n+1)+i+1, (j+1)*(n+1)+i+1, (j+1)*(n+1)+i
-        tris += [(a, b, c), (a, c, d)]
-with open("terrain.off", "w") as f:
-    f.write(f"OFF\n{len(pts)} {len(tris)} 0\n")
-    for p in pts: f.write("%r %r %r\n" % p)
-    for t in tris: f.write("3 %d %d %d\n" % t)
-PY
+python3 "$here/cli_meshes.py" terrain
 "$bin" tetrahedralize terrain.off -o terrain.vtu --extrude-base 2 --json out.json > /dev/null 2> err.txt
 expect_exit "terrain block" 0 $?
 python3 -c "

@@ -1,0 +1,161 @@
+// meshprep pipeline IN -o OUTDIR [--config FILE.json] [--target-faces N | --ratio R]
+//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2] [--threads N]
+//   [--quiet] [--json FILE|-] [--print-config]
+#include "cli_common.h"
+#include "progress_bar.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/pipeline/pipeline.h"
+#include "meshprep/pipeline/pipeline_config.h"
+#include "meshprep/pipeline/pipeline_outputs.h"
+
+#include <tbb/global_control.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+namespace meshprep::cli {
+namespace {
+
+struct PipelineOptions {
+  std::string input, outdir, config, json, format, msh_version;
+  double ratio = 0, extrude_base = 0;
+  std::size_t target_faces = 0, threads = 0;
+  bool quiet = false, print_config = false, config_keys = false;
+};
+
+// Defaults, then the configuration file, then the command line's own flags.
+PipelineConfig effective_config(const PipelineOptions& o) {
+  PipelineConfig config;
+  if (!o.config.empty()) read_config_file(o.config, config);
+  if (o.ratio > 0) {
+    config.simplify.ratio = o.ratio;
+    config.simplify.target_faces = 0;
+  }
+  if (o.target_faces > 0) config.simplify.target_faces = o.target_faces;
+  if (o.extrude_base > 0) config.tetrahedralize.extrude_base = o.extrude_base;
+  if (!o.format.empty()) config.tetrahedralize.format = o.format;
+  if (!o.msh_version.empty())
+    config.tetrahedralize.export_options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+  return config;
+}
+
+std::string stage_line(const StageRecord& s) {
+  std::ostringstream line;
+  line << std::left << std::setw(15) << s.name;
+  if (!s.ran) {
+    line << "skipped: " << s.note;
+    return line.str();
+  }
+  line << std::right << std::fixed << std::setprecision(2) << std::setw(7) << s.seconds << " s  " << s.faces_before
+       << " -> " << s.faces_after << " faces";
+  if (s.hausdorff_relative) line << std::scientific << std::setprecision(2) << ", Hausdorff " << *s.hausdorff_relative;
+  line << std::fixed << std::setprecision(3) << ", radius ratio p95 " << s.radius_ratio_p95 << std::setprecision(1)
+       << ", min angle < 20 deg " << 100 * s.faces_min_angle_below_20 << " %";
+  if (!s.note.empty()) line << "; " << s.note;
+  return line.str();
+}
+
+// Every configuration key as a Markdown table (docs/pipeline.md holds this output).
+void print_config_keys() {
+  std::cout << "| key | value | default | meaning |\n| --- | --- | --- | --- |\n";
+  for (const ConfigKeyDoc& key : describe_config())
+    std::cout << "| `" << key.key << "` | " << key.type << " | `" << key.default_value.dump() << "` | " << key.description
+              << " |\n";
+}
+
+int run_pipeline_command(const PipelineOptions& o) {
+  if (o.config_keys) {
+    print_config_keys();
+    return kSuccess;
+  }
+  const PipelineConfig config = effective_config(o);
+  if (o.print_config) {
+    std::cout << to_json(config).dump(2) << '\n';
+    return kSuccess;
+  }
+  if (o.input.empty() || o.outdir.empty()) throw InvalidInput("pipeline: give the input and -o OUTDIR (see --help)");
+  if (!std::filesystem::exists(o.input)) throw IoError(o.input + ": cannot read: no such file");
+  for (const char* name : {"surface.ply", "report.html", "report.json", "report.vtu", "pipeline.json"})
+    ensure_not_input((std::filesystem::path(o.outdir) / name).string(), o.input);
+  ensure_not_input(o.json, o.input);
+  prepare_output_dir(o.outdir);  // before the work: an unwritable folder fails at once
+
+  const std::size_t threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  const tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
+  std::ostream& log = o.json == "-" ? std::cerr : std::cout;
+  std::unique_ptr<ProgressBar> bar;
+  PipelineObserver observer;
+  if (!o.quiet) {
+    observer.stage_started = [&bar](const std::string& stage) { bar = std::make_unique<ProgressBar>(stage); };
+    observer.progress = [&bar](double fraction) {
+      if (bar) bar->update(fraction);
+    };
+    observer.stage_finished = [&bar, &log](const StageRecord& s) {
+      bar.reset();
+      log << stage_line(s) << std::endl;
+    };
+  }
+  const PipelineResult result = run_pipeline(o.input, config, observer);
+  bar.reset();
+
+  nlohmann::ordered_json run;
+  run["input"] = o.input;
+  run["threads"] = threads;
+  run["versions"] = build_versions();
+  const std::vector<std::string> files = write_pipeline_outputs(result, config, o.outdir, run);
+  if (!o.json.empty()) emit_json(pipeline_summary(result, config), o.json);
+  if (!o.quiet) {
+    log << "wrote " << o.outdir << ":";
+    for (const std::string& f : files) log << ' ' << f;
+    log << " (" << std::fixed << std::setprecision(1) << result.seconds << " s)" << std::endl;
+  }
+  if (!result.fem.ready && config.tetrahedralize.enabled)
+    throw WorkFailed(o.input + ": not FEM-ready: " + result.fem.problems.front() + " (see " +
+                     (std::filesystem::path(o.outdir) / "report.html").string() + ")");
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_pipeline_command(CLI::App& app) {
+  auto o = std::make_shared<PipelineOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "pipeline",
+      "Raw input to FEM-ready tets and a report: points are reconstructed, surfaces checked; then simplify, smooth, "
+      "enhance, quality, tetrahedralize");
+  cmd->add_option("input", o->input, "Point set (.xyz) or surface mesh (.off .obj .ply .stl)");
+  cmd->add_option("-o,--output", o->outdir,
+                  "Output folder: surface.ply, tets.<format>, report.html, report.json, report.vtu, pipeline.json");
+  cmd->add_option("--config", o->config,
+                  "Configuration file (JSON, keys in docs/pipeline.md; a pipeline.json replays its run)")
+      ->check(CLI::ExistingFile);
+  auto* ratio = cmd->add_option("--ratio", o->ratio, "Simplify: fraction of the faces kept, in (0, 1]")
+                    ->check(CLI::Range(1e-9, 1.0));
+  cmd->add_option("--target-faces", o->target_faces, "Simplify: target number of faces")
+      ->check(CLI::PositiveNumber)
+      ->excludes(ratio);
+  cmd->add_option("--extrude-base", o->extrude_base,
+                  "An open height field (terrain) becomes a block with its base this far below its lowest point "
+                  "(default: 5 % of the bounding-box diagonal)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node")
+      ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));
+  cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
+      ->check(CLI::IsMember({"4.1", "2.2"}));
+  cmd->add_option("--threads", o->threads, "Threads for the parallel parts (default: all cores)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1024)));
+  cmd->add_flag("--quiet", o->quiet, "No progress bars and no stage summaries");
+  cmd->add_option("--json", o->json, "Write the run's summary (report.json) to FILE ('-' = stdout)");
+  cmd->add_flag("--print-config", o->print_config,
+                "Print the effective configuration (defaults, then --config, then the flags above) and exit");
+  cmd->add_flag("--config-keys", o->config_keys, "Print every configuration key with its type, default and meaning, and exit");
+  return [o] { return run_pipeline_command(*o); };
+}
+
+}  // namespace meshprep::cli

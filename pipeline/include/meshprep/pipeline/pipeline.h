@@ -1,0 +1,91 @@
+#pragma once
+/// \file pipeline.h
+/// From raw input to an FEM-ready tetrahedral mesh and its report, in one call (the stages of
+/// the paper, chained):
+/// - points (.xyz): reconstruct -> simplify -> smooth -> enhance -> quality -> tetrahedralize (the
+///   terrain closed into a block);
+/// - a surface mesh: check -> simplify -> smooth -> enhance -> quality -> tetrahedralize.
+///
+/// Every stage is measured against the pipeline's input surface (the mesh read, or the
+/// reconstruction): faces, Hausdorff distance, volume change, triangle shape, time. A stage that
+/// would make the surface cross itself is an error, never a silent result. write_pipeline_outputs
+/// (pipeline_outputs.h) turns the result into files.
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/fem/readiness.h"
+#include "meshprep/fem/tet_mesh.h"
+#include "meshprep/fem/tet_quality.h"
+#include "meshprep/pipeline/pipeline_config.h"
+#include "meshprep/quality/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace meshprep {
+
+/// What one stage did, measured on its output against the pipeline's input surface.
+struct StageRecord {
+  std::string name;            ///< reconstruct, check, simplify, smooth, enhance, quality, tetrahedralize
+  bool ran = false;            ///< false: switched off or nothing to do (see note)
+  std::string note;            ///< one line: why it was skipped, or what it found
+  double seconds = 0;          ///< the stage's own work (not the measurement)
+  std::size_t faces_before = 0, faces_after = 0;
+  std::optional<double> hausdorff_relative;     ///< to the input surface, / its bounding-box diagonal
+  std::optional<double> volume_change_percent;  ///< closed surfaces
+  double radius_ratio_mean = 0, radius_ratio_p95 = 0;
+  double faces_min_angle_below_20 = 0;  ///< fraction
+  std::size_t self_intersections = 0;
+  nlohmann::ordered_json details = nlohmann::ordered_json::object();  ///< the stage's own figures
+};
+
+/// Why the tets could not be made, or that they were.
+struct FemVerdict {
+  bool ready = false;                 ///< tets were generated from a valid surface
+  std::vector<std::string> problems;  ///< one line each when not ready
+};
+
+struct PipelineResult {
+  std::string input;             ///< the input path
+  bool from_points = false;      ///< the input was a point set
+  std::size_t input_points = 0;  ///< points read (point input)
+  TriangleSoup input_surface;    ///< the mesh read, or the reconstruction: every stage is measured against it
+  TriangleSoup surface;          ///< the final surface
+  QualityReport input_quality;   ///< of input_surface (no reference)
+  QualityReport final_quality;   ///< of surface, against input_surface
+  std::vector<StageRecord> stages;
+  std::optional<TetMesh> tets;
+  std::optional<TetQualityReport> tet_quality;
+  std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)
+  std::optional<double> extrusion_depth;  ///< an open surface closed into a block: its base's depth
+  std::string tetgen_switches;
+  FemVerdict fem;
+  double seconds = 0;            ///< the whole run
+};
+
+/// Hooks for a front end; every member may be empty. Called from the calling thread.
+struct PipelineObserver {
+  std::function<void(const std::string& stage)> stage_started;
+  std::function<void(double fraction)> progress;  ///< within the current stage, in [0, 1]
+  std::function<void(const StageRecord&)> stage_finished;
+};
+
+/// Run the pipeline on the file `input` (.xyz points, or a surface mesh).
+/// \throws InvalidInput for an unreadable, malformed or non-manifold input (the message names the
+///         file); IoError if unreadable; PipelineFailed when the work cannot be done (the input
+///         cannot be made FEM-ready as configured, e.g. an open surface without extrude_base; a
+///         stage made the surface cross itself). A surface TetGen rejects is not an exception:
+///         the result says why in `fem`.
+PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config,
+                            const PipelineObserver& observer = {});
+
+/// The pipeline could not do its work on a valid input; the message gives the reason.
+class PipelineFailed : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace meshprep

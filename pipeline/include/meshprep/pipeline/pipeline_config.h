@@ -1,0 +1,110 @@
+#pragma once
+/// \file pipeline_config.h
+/// Every setting of `meshprep pipeline`, grouped by stage, with its JSON form. The defaults are the
+/// stage libraries' own (reconstruct.h, simplify.h, smooth.h, enhance.h, report.h,
+/// tetrahedralize.h) except where a field says otherwise; docs/pipeline.md lists every key.
+///
+/// The file is one JSON object of sections ("reconstruct", "simplify", "smooth", "enhance",
+/// "quality", "tetrahedralize"), each an object of keys; any subset may be given. A section "run"
+/// (what meshprep wrote into pipeline.json about the run: input, versions) is ignored, so a
+/// pipeline.json replays its run. Unknown sections and keys are rejected with the list of valid
+/// ones, and every value is checked for its type and range.
+
+#include "meshprep/fem/export.h"
+#include "meshprep/fem/tetrahedralize.h"
+#include "meshprep/preprocess/enhance.h"
+#include "meshprep/preprocess/reconstruct.h"
+#include "meshprep/preprocess/simplify.h"
+#include "meshprep/preprocess/smooth.h"
+#include "meshprep/quality/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace meshprep {
+
+struct PipelineConfig {
+  struct Reconstruct {  ///< points input only
+    ReconstructParams params = defaults();
+    std::string variation_threshold = "p90";  ///< text form, see variation_rule.h (applied to params.fit)
+    /// The pipeline keeps interior gaps, flagged (ReconstructParams::fill_holes), so that the
+    /// terrain has one boundary loop and can be closed into a block.
+    static ReconstructParams defaults() {
+      ReconstructParams p;
+      p.fill_holes = true;
+      return p;
+    }
+  } reconstruct;
+  struct Simplify {
+    bool enabled = true;
+    /// Fraction of the faces kept. Empty = automatic: 0.1 for a reconstructed terrain (its grid
+    /// oversamples the points), no simplification for an input mesh (its detail is the user's).
+    std::optional<double> ratio;
+    std::size_t target_faces = 0;  ///< > 0 overrides ratio
+    SimplifyParams params;         ///< cost, min_angle_deg, max_error, polish
+  } simplify;
+  struct Smooth {
+    /// Off by default: smoothing removes noise, and on a clean surface it only moves the surface
+    /// away from the input (docs/pipeline.md has the figures). Switch it on for noisy scans.
+    bool enabled = false;
+    SmoothParams params = defaults();
+    static SmoothParams defaults() {
+      SmoothParams p;
+      p.preserve_volume = true;  // a closed part keeps its volume through the pipeline
+      return p;
+    }
+  } smooth;
+  struct Enhance {
+    bool enabled = true;
+    EnhanceParams params;
+  } enhance;
+  struct Quality {
+    /// The final report's sampling; each stage's row uses a fifth of the samples. 200,000 per
+    /// direction (meshprep quality: 10^6) keeps the report's time below the stages' own.
+    QualityParams params = defaults();
+    static QualityParams defaults() {
+      QualityParams p;
+      p.distance_samples = 200000;
+      return p;
+    }
+  } quality;
+  struct Tetrahedralize {
+    bool enabled = true;
+    TetParams params;
+    /// An open height field (a terrain) is closed into a block with a flat base this far below its
+    /// lowest point: extrude_base in absolute units if > 0, else extrude_base_relative x the
+    /// bounding-box diagonal.
+    double extrude_base = 0;
+    double extrude_base_relative = 0.05;
+    std::string format = "msh";  ///< msh, vtu, mesh, inp or node: the file tets.<format>
+    TetExportOptions export_options;
+  } tetrahedralize;
+};
+
+/// One documented key, for `--print-config` users and docs/pipeline.md.
+struct ConfigKeyDoc {
+  std::string key;          ///< "section.name"
+  std::string type;         ///< e.g. "number in (0, 1]", "bool", "one of msh, vtu, mesh, inp, node"
+  nlohmann::ordered_json default_value;
+  std::string description;
+};
+
+/// Apply `json` (a configuration object) onto `config`. `origin` (a file name) starts every message.
+/// \throws InvalidInput naming the key and the problem: not an object, an unknown section or key
+///         (with the valid ones), a value of the wrong type or out of range.
+void apply_config(const nlohmann::json& json, const std::string& origin, PipelineConfig& config);
+
+/// Read a configuration file onto `config`. \throws IoError if unreadable; InvalidInput as above
+/// and for malformed JSON (with the line and column).
+void read_config_file(const std::string& path, PipelineConfig& config);
+
+/// The effective configuration: every key of every section.
+nlohmann::ordered_json to_json(const PipelineConfig& config);
+
+/// Every key with its type, default and meaning, in file order.
+std::vector<ConfigKeyDoc> describe_config();
+
+}  // namespace meshprep

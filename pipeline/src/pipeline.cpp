@@ -1,0 +1,337 @@
+#include "meshprep/pipeline/pipeline.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+#include "meshprep/fem/extrude.h"
+#include "meshprep/fem/tetrahedralize.h"
+#include "meshprep/preprocess/enhance.h"
+#include "meshprep/preprocess/reconstruct.h"
+#include "meshprep/preprocess/simplify.h"
+#include "meshprep/preprocess/smooth.h"
+#include "meshprep/quality/triangle_metrics.h"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace meshprep {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// A figure for a one-line note: `digits` significant digits.
+std::string figure(double value, int digits = 3) {
+  std::ostringstream out;
+  out << std::setprecision(digits) << value;
+  return out.str();
+}
+
+// A reconstructed terrain's grid oversamples its points (300 x 300 vertices for 10,000 samples):
+// a tenth of its faces keeps about as many vertices as there are samples.
+constexpr double kTerrainRatio = 0.1;
+
+class Run {
+ public:
+  Run(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer)
+      : config_(config), observer_(observer) {
+    result_.input = input;
+    result_.from_points = extension_of(input) == "xyz";
+    stage_params_ = config.quality.params;
+    stage_params_.distance_samples = std::max<std::size_t>(1000, config.quality.params.distance_samples / 5);
+  }
+
+  PipelineResult run() {
+    const Clock::time_point start = Clock::now();
+    if (result_.from_points) reconstruct();
+    else check_input();
+    input_self_intersections_ = result_.input_quality.self_intersections;
+    simplify_stage();
+    smooth_stage();
+    enhance_stage();
+    quality_stage();
+    tetrahedralize_stage();
+    result_.seconds = seconds_since(start);
+    return std::move(result_);
+  }
+
+ private:
+  void finish(StageRecord record) {
+    if (observer_.stage_finished) observer_.stage_finished(record);
+    result_.stages.push_back(std::move(record));
+  }
+
+  // A stage begins: the front end is told, and its record is opened on the current mesh.
+  StageRecord started(const std::string& name) {
+    if (observer_.stage_started) observer_.stage_started(name);
+    StageRecord record;
+    record.name = name;
+    record.ran = true;
+    record.faces_before = mesh_.n_faces();
+    return record;
+  }
+
+  void skip(const std::string& name, const std::string& why) {
+    StageRecord record;
+    record.name = name;
+    record.note = why;
+    record.faces_before = record.faces_after = mesh_.n_faces();
+    finish(std::move(record));
+  }
+
+  std::function<void(double)> progress() const { return observer_.progress; }
+
+  // The figures of the table row, from a report of the stage's output against the input surface.
+  static void fill_shape(StageRecord& record, const QualityReport& report) {
+    record.faces_after = report.faces;
+    record.radius_ratio_mean = report.radius_ratio.mean;
+    record.radius_ratio_p95 = report.radius_ratio.p95;
+    record.faces_min_angle_below_20 = report.faces_min_angle_below_20;
+    record.self_intersections = report.self_intersections;
+    if (report.reference) {
+      record.hausdorff_relative = report.reference->hausdorff_relative;
+      record.volume_change_percent = report.reference->volume_change_percent;
+    }
+  }
+
+  // Measures the mesh after a stage; a stage that made the surface cross itself stops the run.
+  void measure(StageRecord& record) {
+    const QualityReport report = analyze_quality(soup_from_mesh(mesh_), stage_params_, &result_.input_surface);
+    fill_shape(record, report);
+    if (report.self_intersections > input_self_intersections_)
+      throw PipelineFailed(result_.input + ": " + record.name + " made the surface intersect itself at " +
+                           std::to_string(report.self_intersections - input_self_intersections_) +
+                           " more face pairs than the input; switch the stage off or change its settings");
+  }
+
+  void reconstruct() {
+    StageRecord record = started("reconstruct");
+    const PointSet points = read_points(result_.input);
+    result_.input_points = points.points.size();
+    ReconstructParams params = config_.reconstruct.params;
+    params.progress = progress();
+    const Clock::time_point start = Clock::now();
+    ReconstructResult reconstruction;
+    try {
+      reconstruction = reconstruct_surface(points.points, params);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(result_.input + ": " + e.what());
+    }
+    record.seconds = seconds_since(start);
+    if (reconstruction.mesh.triangles.empty())
+      throw PipelineFailed(result_.input + ": every triangle is farther than max_gap " +
+                           std::to_string(reconstruction.max_gap) + " from the samples");
+    record.details = {{"points", points.points.size()},
+                      {"grid", {reconstruction.columns, reconstruction.rows}},
+                      {"patches", reconstruction.patches},
+                      {"grown_patches", reconstruction.grown_patches},
+                      {"max_gap", reconstruction.max_gap},
+                      {"gap_faces_left_out", reconstruction.gap_triangles},
+                      {"filled_faces", reconstruction.filled_triangles}};
+    result_.input_surface = std::move(reconstruction.mesh);
+    mesh_ = mesh_from_soup(result_.input_surface);  // manifold by construction
+    record.faces_before = mesh_.n_faces();
+    result_.input_quality = analyze_quality(result_.input_surface, stage_params_);
+    double filled_area = 0;
+    for (const std::size_t f : reconstruction.filled_faces) filled_area += result_.input_quality.face_shapes[f].area;
+    const double filled_fraction = filled_area / result_.input_quality.area;
+    record.details["filled_area_fraction"] = filled_fraction;
+    record.note = std::to_string(points.points.size()) + " points; " + std::to_string(reconstruction.gap_triangles) +
+                  " faces left out outside the footprint";
+    if (reconstruction.filled_triangles > 0)
+      record.note += "; " + std::to_string(reconstruction.filled_triangles) +
+                     " faces over holes in the data kept and flagged (" + figure(100 * filled_fraction, 2) +
+                     " % of the area)";
+    fill_shape(record, result_.input_quality);
+    finish(std::move(record));
+  }
+
+  void check_input() {
+    StageRecord record = started("check");
+    const Clock::time_point start = Clock::now();
+    LoadedMesh loaded = load_mesh(result_.input);
+    if (!loaded.build.dropped_faces.empty())
+      throw InvalidInput(result_.input + ": face " + std::to_string(loaded.build.dropped_faces.front()) +
+                         (loaded.build.dropped_faces.size() > 1
+                              ? " and " + std::to_string(loaded.build.dropped_faces.size() - 1) + " more"
+                              : std::string()) +
+                         " make an edge or vertex non-manifold; the pipeline needs a manifold surface (meshprep "
+                         "quality lists them)");
+    result_.input_surface = std::move(loaded.soup);
+    mesh_ = std::move(loaded.mesh);
+    record.faces_before = record.faces_after = mesh_.n_faces();
+    result_.input_quality = analyze_quality(result_.input_surface, stage_params_);
+    const QualityReport& report = result_.input_quality;
+    record.seconds = seconds_since(start);
+    fill_shape(record, report);
+    record.details = {{"closed", report.closed},
+                      {"manifold", report.manifold},
+                      {"genus", report.genus ? nlohmann::ordered_json(*report.genus) : nlohmann::ordered_json(nullptr)},
+                      {"border_edges", report.border_edges},
+                      {"degenerate_faces", report.degenerate_faces},
+                      {"self_intersections", report.self_intersections}};
+    record.note = std::string(report.closed ? "closed" : "open") + ", manifold" +
+                  (report.genus ? ", genus " + std::to_string(*report.genus) : std::string()) + ", " +
+                  std::to_string(report.self_intersections) + " self-intersecting face pairs";
+    finish(std::move(record));
+    if (!config_.tetrahedralize.enabled) return;
+    // What no later stage can mend is refused before any work is done.
+    if (report.self_intersections > 0)
+      throw PipelineFailed(result_.input + ": not FEM-ready: the surface intersects itself at " +
+                           std::to_string(report.self_intersections) +
+                           " face pairs (meshprep quality lists them), which no stage removes; switch tetrahedralize off "
+                           "to process the surface only");
+    if (!report.closed) {
+      try {
+        extrude_to_block(result_.input_surface, 1);
+      } catch (const InvalidInput& e) {
+        throw PipelineFailed(result_.input + ": not FEM-ready: the surface is open (" +
+                             std::to_string(report.border_edges) + " border edges) and cannot be closed into a block (" +
+                             e.what() + "); switch tetrahedralize off to process the surface only");
+      }
+    }
+  }
+
+  void simplify_stage() {
+    const PipelineConfig::Simplify& c = config_.simplify;
+    if (!c.enabled) return skip("simplify", "switched off");
+    const bool has_ratio = c.ratio.has_value() || result_.from_points;
+    if (c.target_faces == 0 && !has_ratio) return skip("simplify", "no target for a mesh input (give --ratio or --target-faces)");
+    StageRecord record = started("simplify");
+    SimplifyParams params = c.params;
+    params.target_faces = c.target_faces;
+    params.keep_ratio = c.ratio ? *c.ratio : has_ratio ? kTerrainRatio : 1.0;
+    params.progress = progress();
+    const SimplifyResult s = simplify(mesh_, params);
+    record.seconds = s.seconds;
+    record.details = {{"target_faces", s.target_faces},
+                      {"reached_target", s.reached_target},
+                      {"collapses", s.collapses},
+                      {"intersection_retries", s.intersection_retries}};
+    if (!s.reached_target) record.note = "target " + std::to_string(s.target_faces) + " faces not reached";
+    measure(record);
+    finish(std::move(record));
+  }
+
+  void smooth_stage() {
+    if (!config_.smooth.enabled) return skip("smooth", "switched off (the default: the stage removes noise)");
+    StageRecord record = started("smooth");
+    SmoothParams params = config_.smooth.params;
+    params.progress = progress();
+    const SmoothResult s = smooth(mesh_, params);
+    record.seconds = s.seconds;
+    record.details = {{"iterations", s.iterations},
+                      {"max_displacement", s.max_displacement},
+                      {"feature_line_vertices", s.feature_line_vertices},
+                      {"corner_vertices", s.corner_vertices}};
+    record.note = std::to_string(s.iterations) + " iteration(s)";
+    measure(record);
+    finish(std::move(record));
+  }
+
+  void enhance_stage() {
+    if (!config_.enhance.enabled) return skip("enhance", "switched off");
+    StageRecord record = started("enhance");
+    EnhanceParams params = config_.enhance.params;
+    params.progress = progress();
+    const EnhanceResult e = enhance(mesh_, &result_.input_surface, params);
+    record.seconds = e.seconds;
+    record.details = {{"rounds", e.rounds},
+                      {"kept_round", e.kept_round},
+                      {"flips", e.flips},
+                      {"removed_vertices", e.removed_vertices},
+                      {"smallest_angle_before_deg", e.before.min_angle_deg},
+                      {"smallest_angle_after_deg", e.after.min_angle_deg}};
+    record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";
+    measure(record);
+    finish(std::move(record));
+  }
+
+  void quality_stage() {
+    StageRecord record = started("quality");
+    result_.surface = soup_from_mesh(mesh_);
+    record.faces_before = result_.surface.triangles.size();
+    const Clock::time_point start = Clock::now();
+    result_.final_quality = analyze_quality(result_.surface, config_.quality.params, &result_.input_surface);
+    record.seconds = seconds_since(start);
+    fill_shape(record, result_.final_quality);
+    record.note = "the final surface against the input, " + std::to_string(result_.final_quality.reference->samples) +
+                  " samples per direction";
+    finish(std::move(record));
+  }
+
+  // The final surface as TetGen's input: checked when closed, extruded into a block when open.
+  std::optional<SurfacePlc> prepare_plc(StageRecord& record) {
+    const TriangleSoup& surface = result_.surface;
+    if (result_.final_quality.closed) {
+      result_.readiness = check_fem_readiness(surface);
+      for (const ReadinessProblem& p : result_.readiness->problems) result_.fem.problems.push_back(p.what + "; " + p.hint);
+      if (!result_.readiness->ready()) return std::nullopt;
+      TriangleSoup oriented = surface;
+      if (result_.readiness->inward_oriented)  // TetGen does not mind, the boundary tags' normals do
+        for (Triangle& t : oriented.triangles) std::swap(t[1], t[2]);
+      return plc_from_surface(oriented, 1);
+    }
+    const PipelineConfig::Tetrahedralize& c = config_.tetrahedralize;
+    const double depth = c.extrude_base > 0 ? c.extrude_base : c.extrude_base_relative * result_.final_quality.bbox_diagonal;
+    record.details["extrude_base_depth"] = depth;
+    try {
+      SurfacePlc block = extrude_to_block(surface, depth);
+      result_.extrusion_depth = depth;
+      return block;
+    } catch (const InvalidInput& e) {
+      result_.fem.problems.push_back(std::string("the open surface cannot be closed into a block: ") + e.what());
+      return std::nullopt;
+    }
+  }
+
+  void tetrahedralize_stage() {
+    if (!config_.tetrahedralize.enabled) return skip("tetrahedralize", "switched off");
+    StageRecord record = started("tetrahedralize");
+    record.faces_before = record.faces_after = result_.surface.triangles.size();
+    fill_shape(record, result_.final_quality);
+    const Clock::time_point start = Clock::now();
+    if (std::optional<SurfacePlc> plc = prepare_plc(record)) {
+      try {
+        result_.tets = tetrahedralize_plc(*plc, config_.tetrahedralize.params);
+      } catch (const TetgenError& e) {
+        result_.fem.problems.push_back(std::string("TetGen: ") + e.what());
+      }
+    }
+    record.seconds = seconds_since(start);
+    if (result_.tets) {
+      result_.tet_quality = analyze_tet_quality(*result_.tets);
+      result_.tetgen_switches = tetgen_switches(config_.tetrahedralize.params, result_.tet_quality->volume);
+      if (result_.tet_quality->inverted_tets > 0)
+        result_.fem.problems.push_back(std::to_string(result_.tet_quality->inverted_tets) + " inverted tets");
+      const TetQualityReport& q = *result_.tet_quality;
+      record.details = {{"tets", q.tetrahedra},
+                        {"points", q.points},
+                        {"volume", q.volume},
+                        {"min_dihedral_deg", q.min_dihedral_deg.min},
+                        {"switches", result_.tetgen_switches}};
+      record.note = std::to_string(q.tetrahedra) + " tets, smallest dihedral " +
+                    figure(q.min_dihedral_deg.min) + " deg";
+    }
+    result_.fem.ready = result_.tets.has_value() && result_.fem.problems.empty();
+    if (!result_.fem.ready) record.note = "not FEM-ready: " + result_.fem.problems.front();
+    finish(std::move(record));
+  }
+
+  const PipelineConfig& config_;
+  const PipelineObserver& observer_;
+  QualityParams stage_params_;
+  PipelineResult result_;
+  TriMesh mesh_;
+  std::size_t input_self_intersections_ = 0;
+};
+
+}  // namespace
+
+PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer) {
+  return Run(input, config, observer).run();
+}
+
+}  // namespace meshprep

@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""Writes the small OFF meshes the CLI test scripts use, into the current folder.
+
+Usage: cli_meshes.py NAME...   (NAME.off is written for each)
+  cube       the closed unit cube, 12 triangles, outward
+  open_box   the cube without its top
+  two_boxes  two interpenetrating cubes (self-intersections)
+  duplicate  the cube with one face twice
+  fin        the cube with a fin on an edge (a non-manifold edge)
+  terrain    an 8 x 8 grid on z = 0.3 sin(x) cos(y) (an open height field, one boundary loop)
+  holed      a 4 x 4 grid without its middle 2 x 2 cells (two boundary loops)
+"""
+import math
+import sys
+
+P = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+T = [(0,2,1),(1,2,3),(4,5,6),(5,7,6),(0,1,4),(1,5,4),(2,6,3),(3,6,7),(0,4,2),(2,4,6),(1,3,5),(3,7,5)]
+
+
+def grid(n, height, skip=()):
+    pts = [(float(i), float(j), height(i, j)) for j in range(n + 1) for i in range(n + 1)]
+    tris = []
+    for j in range(n):
+        for i in range(n):
+            if (i, j) in skip:
+                continue
+            a, b, c, d = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i
+            tris += [(a, b, c), (a, c, d)]
+    return pts, tris
+
+
+def meshes():
+    Q = [(x + 0.5, y + 0.25, z + 0.3) for (x, y, z) in P]
+    return {
+        "cube": (P, T),
+        "open_box": (P, [t for t in T if t not in ((4, 5, 6), (5, 7, 6))]),
+        "two_boxes": (P + Q, T + [tuple(i + 8 for i in t) for t in T]),
+        "duplicate": (P, T + [T[3]]),
+        "fin": (P + [(0.5, 0.5, -1.0)], T + [(0, 1, 8)]),
+        "terrain": grid(8, lambda i, j: 0.3 * math.sin(i) * math.cos(j)),
+        "holed": grid(4, lambda i, j: 0.0, skip={(1, 1), (2, 1), (1, 2), (2, 2)}),
+    }
+
+
+def main(names):
+    known = meshes()
+    for name in names:
+        if name not in known:
+            sys.exit(f"cli_meshes.py: unknown mesh '{name}'; known: {', '.join(known)}")
+        pts, tris = known[name]
+        with open(name + ".off", "w") as f:
+            f.write(f"OFF\n{len(pts)} {len(tris)} 0\n")
+            for p in pts:
+                f.write("%r %r %r\n" % p)
+            for t in tris:
+                f.write("3 %d %d %d\n" % t)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

@@ -1,0 +1,139 @@
+#!/usr/bin/env bash
+# `meshprep pipeline` on the real binary and the bundled data: every output file, tet meshes read
+# back by meshio and Gmsh, the report read by meshio, replay from pipeline.json (byte-identical),
+# re-runs into the same folder, and the error contract (exit 1 / 2, one line, nothing written).
+# Usage: cli_pipeline_test.sh MESHPREP_BINARY SOURCE_DIR
+set -uo pipefail
+bin=$1
+src=$2
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/cli_harness.sh"
+# Debian's python3-meshio serves /usr/bin/python3, not a venv's python3 first on PATH.
+py=
+for p in python3 /usr/bin/python3; do $p -c "import meshio, numpy" 2>/dev/null && { py=$p; break; }; done
+[ -n "$py" ] || { echo "FAIL: no python3 with meshio and numpy (scripts/install-deps.sh installs python3-meshio)"; exit 1; }
+one_line() { [ "$(wc -l < err.txt)" = 1 ] && grep -q "$2" err.txt && ok || bad "$1: expected one line with '$2'"; }
+
+# Tet files are read back alone (fem_readback.py reads every tet mesh of a folder).
+readback() {  # DIR TETFILE...
+  local dir=$1
+  shift
+  rm -rf readback && mkdir readback && for f in "$@"; do cp "$dir/$f" readback/; done
+  python3 - "$dir/report.json" > counts.txt <<'PY'
+import json, sys
+q = json.load(open(sys.argv[1]))["tets"]["tet_quality"]
+print(q["points"], q["tetrahedra"], repr(q["volume"]))
+PY
+  "$py" "$here/fem_readback.py" readback $(cat counts.txt) > readback.txt 2>&1 && ok || { bad "read back $*"; cat readback.txt; }
+}
+
+# ---- a closed CAD part (bundled fandisk), simplified to 30 % ----------------------------------
+"$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --json summary.json > stdout.txt 2> err.txt
+expect_exit "fandisk" 0 $?
+for f in surface.ply tets.msh report.html report.json report.vtu pipeline.json; do
+  [ -s fandisk/$f ] && ok || bad "fandisk/$f missing"
+done
+[ "$(ls -A fandisk | wc -l)" = 6 ] && ok || bad "fandisk holds other files: $(ls -A fandisk)"
+grep -q "^enhance " stdout.txt && grep -q "^wrote fandisk" stdout.txt && ok || bad "stage summaries on stdout"
+cmp -s summary.json fandisk/report.json && ok || bad "--json FILE is report.json"
+python3 - <<'PY' && ok || bad "fandisk report.json"
+import json
+j = json.load(open("fandisk/report.json"))
+assert j["fem_ready"] and j["problems"] == [], j["problems"]
+assert [s["name"] for s in j["stages"]] == ["check", "simplify", "smooth", "enhance", "quality", "tetrahedralize"]
+simplify = j["stages"][1]
+assert abs(simplify["faces_after"] - 0.3 * 12946) <= 0.01 * 0.3 * 12946, simplify
+assert j["quality"]["closed"] and j["quality"]["self_intersections"] == 0
+assert j["quality"]["reference"]["hausdorff_relative"] < 5e-3, j["quality"]["reference"]
+assert j["tets"]["tet_quality"]["inverted_tets"] == 0
+PY
+readback fandisk tets.msh
+"$py" - <<'PY' && ok || bad "report.vtu read by meshio"
+import json, meshio
+m = meshio.read("fandisk/report.vtu")
+faces = json.load(open("fandisk/report.json"))["quality"]["faces"]
+assert len(m.cells_dict["triangle"]) == faces
+for name in ("radius_ratio", "aspect_ratio", "min_angle_deg", "max_angle_deg", "area", "degenerate"):
+    assert len(m.cell_data[name][0]) == faces, name
+assert len(m.point_data["surface_variation"]) == len(m.points)
+PY
+grep -q "property double surface_variation" fandisk/surface.ply && ok || bad "sigma in surface.ply"
+
+# Replay: pipeline.json as the configuration gives the same surface, byte for byte.
+"$bin" pipeline "$src/examples/data/fandisk.off" -o replay --config fandisk/pipeline.json --quiet > stdout.txt 2> err.txt
+expect_exit "replay" 0 $?
+[ ! -s stdout.txt ] && ok || bad "--quiet printed"
+cmp -s fandisk/surface.ply replay/surface.ply && ok || bad "the replay's surface differs"
+cmp -s fandisk/tets.msh replay/tets.msh && ok || bad "the replay's tets differ"
+"$bin" pipeline --config fandisk/pipeline.json --print-config > printed.json 2> err.txt
+expect_exit "print-config" 0 $?
+python3 -c "
+import json
+a = json.load(open('printed.json')); b = json.load(open('fandisk/pipeline.json')); b.pop('run')
+assert a == b and a['simplify']['ratio'] == 0.3" && ok || bad "print-config = pipeline.json without its run section"
+
+# Re-running with another format replaces the tets.
+"$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --format inp --quiet 2> err.txt
+expect_exit "fandisk inp" 0 $?
+[ -s fandisk/tets.inp ] && [ ! -e fandisk/tets.msh ] && ok || bad "tets.msh not replaced by tets.inp: $(ls fandisk)"
+readback fandisk tets.inp
+
+# ---- a terrain from the bundled points (a coarse grid, for speed), as VTK XML -----------------
+echo '{"reconstruct": {"resolution": [80, 80]}}' > coarse.json
+"$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o terrain --config coarse.json --format vtu --json - \
+  > terrain.json 2> err.txt
+expect_exit "terrain" 0 $?
+python3 - <<'PY' && ok || bad "terrain summary on stdout"
+import json
+j = json.load(open("terrain.json"))
+assert j["input_kind"] == "points" and j["input_points"] == 10000 and j["fem_ready"]
+r = j["stages"][0]
+assert r["name"] == "reconstruct" and r["details"]["grid"] == [80, 80]
+assert j["quality"]["boundary_loops"] == 1
+PY
+grep -q "^reconstruct " err.txt && ok || bad "with --json - the stage lines go to stderr"
+readback terrain tets.vtu
+
+# ---- errors: exit 2, one line, nothing written ------------------------------------------------
+"$bin" pipeline missing.off -o out_missing > /dev/null 2> err.txt; expect_exit "missing input" 2 $?
+one_line "missing input" "missing.off"
+[ ! -e out_missing ] && ok || bad "a folder was made for a missing input"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > truncated.off
+"$bin" pipeline truncated.off -o out_truncated > /dev/null 2> err.txt; expect_exit "truncated input" 2 $?
+one_line "truncated input" "truncated.off"
+[ -z "$(ls -A out_truncated 2>/dev/null)" ] && ok || bad "files written for a truncated input"
+echo '{"simplify": {"ratoi": 0.5}}' > typo.json
+"$bin" pipeline "$src/examples/data/fandisk.off" -o out_typo --config typo.json > /dev/null 2> err.txt
+expect_exit "bad config key" 2 $?
+one_line "bad config key" "unknown key 'simplify.ratoi'; valid keys of simplify: enabled, ratio"
+echo '{"simplify": {"ratio": 0.5,}}' > broken.json
+"$bin" pipeline "$src/examples/data/fandisk.off" -o out_broken --config broken.json > /dev/null 2> err.txt
+expect_exit "config not JSON" 2 $?
+one_line "config not JSON" "broken.json: not valid JSON"
+echo x > a_file
+"$bin" pipeline "$src/examples/data/fandisk.off" -o a_file/out > /dev/null 2> err.txt
+expect_exit "unwritable OUTDIR" 2 $?
+one_line "unwritable OUTDIR" "a_file/out: cannot create the output folder"
+"$bin" pipeline "$src/examples/data/fandisk.off" -o a_file > /dev/null 2> err.txt
+expect_exit "OUTDIR is a file" 2 $?
+one_line "OUTDIR is a file" "a_file: "
+"$bin" pipeline "$src/examples/data/fandisk.off" > /dev/null 2> err.txt; expect_exit "no -o" 2 $?
+"$bin" pipeline "$src/examples/data/fandisk.off" -o x --ratio 0.5 --target-faces 10 > /dev/null 2> err.txt
+expect_exit "--ratio with --target-faces" 2 $?
+"$bin" pipeline "$src/examples/data/fandisk.off" -o x --format stl > /dev/null 2> err.txt; expect_exit "bad format" 2 $?
+[ ! -e x ] && ok || bad "a folder was made on bad usage"
+
+# ---- the work cannot be done: exit 1 with the reason, nothing written -------------------------
+python3 "$here/cli_meshes.py" two_boxes holed
+"$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 1 $?
+one_line "self-intersecting input" "two_boxes.off: not FEM-ready: the surface intersects itself"
+[ -z "$(ls -A out_boxes 2>/dev/null)" ] && ok || bad "files written for a self-intersecting input"
+"$bin" pipeline holed.off -o out_holed > /dev/null 2> err.txt; expect_exit "open surface with a hole" 1 $?
+one_line "open surface with a hole" "holed.off: not FEM-ready: the surface is open"
+echo '{"tetrahedralize": {"enabled": false}}' > surface_only.json
+"$bin" pipeline holed.off -o out_holed --config surface_only.json --quiet 2> err.txt
+expect_exit "surface only" 0 $?
+[ -s out_holed/surface.ply ] && [ ! -e out_holed/tets.msh ] && ok || bad "surface only: $(ls out_holed)"
+
+echo "cli_pipeline: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,143 @@
+#include "meshprep/pipeline/pipeline_config.h"
+
+#include "meshprep/core/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace meshprep {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string error_of(const Json& json) {
+  PipelineConfig config;
+  try {
+    apply_config(json, "c.json", config);
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PipelineConfig, DefaultsAreTheStagesOwnWhereTheHeaderSaysSo) {
+  const PipelineConfig c;
+  EXPECT_EQ(c.simplify.params.min_angle_deg, SimplifyParams().min_angle_deg);
+  EXPECT_EQ(c.enhance.params.max_deviation, EnhanceParams().max_deviation);
+  EXPECT_EQ(c.enhance.params.tail_k, EnhanceParams().tail_k);
+  EXPECT_EQ(c.tetrahedralize.params.radius_edge, TetParams().radius_edge);
+  EXPECT_EQ(c.reconstruct.params.fit.neighbors, PartitionOfUnityParams().neighbors);
+  // The pipeline's own choices (pipeline_config.h says why).
+  EXPECT_TRUE(c.reconstruct.params.fill_holes);
+  EXPECT_FALSE(c.smooth.enabled);
+  EXPECT_TRUE(c.smooth.params.preserve_volume);
+  EXPECT_FALSE(c.simplify.ratio.has_value());
+  EXPECT_EQ(c.quality.params.distance_samples, 200000u);
+}
+
+TEST(PipelineConfig, TheEffectiveConfigurationReadsBackToItself) {
+  PipelineConfig changed;
+  apply_config(Json::parse(R"({"simplify": {"ratio": 0.25, "cost": "distance"},
+                               "smooth": {"enabled": true, "method": "taubin", "iterations": 3},
+                               "reconstruct": {"resolution": [120, 80], "variation_threshold": 0.3},
+                               "tetrahedralize": {"format": "inp", "msh_version": "2.2", "extrude_base": 5}})"),
+               "c.json", changed);
+  EXPECT_EQ(*changed.simplify.ratio, 0.25);
+  EXPECT_EQ(changed.simplify.params.cost, CollapseCost::Distance);
+  EXPECT_EQ(changed.smooth.params.method, SmoothMethod::Taubin);
+  EXPECT_EQ(changed.reconstruct.params.columns, 120u);
+  EXPECT_EQ(changed.reconstruct.params.rows, 80u);
+  EXPECT_EQ(changed.reconstruct.params.fit.variation_percentile, -1);  // a fixed threshold
+  EXPECT_EQ(changed.reconstruct.params.fit.variation_threshold, 0.3);
+  EXPECT_EQ(changed.tetrahedralize.export_options.msh_version, MshVersion::V22);
+  const nlohmann::ordered_json written = to_json(changed);
+  PipelineConfig again;
+  apply_config(Json::parse(written.dump()), "again.json", again);
+  EXPECT_EQ(to_json(again), written);
+  EXPECT_NE(to_json(PipelineConfig()), written);
+}
+
+TEST(PipelineConfig, EveryKeyIsDescribedAndWrittenOnce) {
+  const nlohmann::ordered_json json = to_json(PipelineConfig());
+  std::set<std::string> written;
+  for (const auto& [section, keys] : json.items())
+    for (const auto& item : keys.items()) written.insert(section + "." + item.key());
+  std::set<std::string> described;
+  for (const ConfigKeyDoc& doc : describe_config()) {
+    EXPECT_FALSE(doc.type.empty()) << doc.key;
+    EXPECT_FALSE(doc.description.empty()) << doc.key;
+    EXPECT_TRUE(described.insert(doc.key).second) << "twice: " << doc.key;
+  }
+  EXPECT_EQ(described, written);
+}
+
+TEST(PipelineConfig, DocsListEveryKey) {
+  std::ifstream in(MESHPREP_DOCS_DIR "/pipeline.md");
+  ASSERT_TRUE(in) << "docs/pipeline.md";
+  std::stringstream docs;
+  docs << in.rdbuf();
+  for (const ConfigKeyDoc& doc : describe_config())
+    EXPECT_NE(docs.str().find("`" + doc.key + "`"), std::string::npos) << doc.key << " is not in docs/pipeline.md";
+}
+
+TEST(PipelineConfig, UnknownSectionsAndKeysNameTheValidOnes) {
+  EXPECT_EQ(error_of(Json::parse(R"({"simplfy": {}})")),
+            "c.json: unknown section 'simplfy'; valid sections: reconstruct, simplify, smooth, enhance, quality, "
+            "tetrahedralize");
+  const std::string key = error_of(Json::parse(R"({"simplify": {"ratoi": 0.5}})"));
+  EXPECT_EQ(key.rfind("c.json: unknown key 'simplify.ratoi'; valid keys of simplify: enabled, ratio, target_faces", 0), 0u)
+      << key;
+}
+
+TEST(PipelineConfig, ValuesOfTheWrongTypeOrRangeAreRefusedWithTheKey) {
+  EXPECT_EQ(error_of(Json::parse(R"({"simplify": {"ratio": 0}})")),
+            "c.json: simplify.ratio: expected null or a number in (0, 1], not 0");
+  EXPECT_EQ(error_of(Json::parse(R"({"simplify": {"enabled": "yes"}})")),
+            "c.json: simplify.enabled: expected true or false, not \"yes\"");
+  EXPECT_EQ(error_of(Json::parse(R"({"smooth": {"iterations": 2.5}})")),
+            "c.json: smooth.iterations: expected an integer in [1, 1000], not 2.5");
+  EXPECT_EQ(error_of(Json::parse(R"({"smooth": {"iterations": -1}})")),
+            "c.json: smooth.iterations: expected an integer in [1, 1000], not -1");
+  EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"format": "stl"}})")),
+            "c.json: tetrahedralize.format: expected one of msh, vtu, mesh, inp, node, not \"stl\"");
+  EXPECT_NE(error_of(Json::parse(R"({"enhance": {"max_deviation": 0}})")).find("number in (0, 1]"), std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"reconstruct": {"resolution": [1, 5]}})")).find("[NX, NY]"), std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"reconstruct": {"variation_threshold": "q9"}})")).find("percentile"),
+            std::string::npos);
+  EXPECT_EQ(error_of(Json::parse(R"({"smooth": 3})")), "c.json: smooth: expected an object of keys, not 3");
+  EXPECT_EQ(error_of(Json::parse(R"([1])")), "c.json: a configuration is a JSON object of sections, not [1]");
+}
+
+TEST(PipelineConfig, ARefusedValueIsNotApplied) {
+  PipelineConfig config;
+  EXPECT_THROW(apply_config(Json::parse(R"({"simplify": {"ratio": 2}})"), "c.json", config), InvalidInput);
+  EXPECT_FALSE(config.simplify.ratio.has_value());
+}
+
+TEST(PipelineConfig, TheRunSectionOfAPipelineJsonIsIgnored) {
+  EXPECT_EQ(error_of(Json::parse(R"({"run": {"input": "x.off", "versions": {}}, "quality": {"distance_samples": 5000}})")),
+            "");
+}
+
+TEST(PipelineConfig, FilesAreReadWithTheirErrors) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "meshprep_config_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "bad.json").string();
+  std::ofstream(path) << "{\"simplify\": {\"ratio\": 0.5,}}";
+  PipelineConfig config;
+  try {
+    read_config_file(path, config);
+    ADD_FAILURE() << "malformed JSON accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": not valid JSON: parse error at line 1, column 28", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(read_config_file((dir / "missing.json").string(), config), IoError);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace meshprep

@@ -1,0 +1,199 @@
+#include "meshprep/pipeline/pipeline.h"
+#include "meshprep/pipeline/pipeline_outputs.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace meshprep {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Pipeline : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("meshprep_pipeline_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // A terrain z = 0.1 sin(2x) cos(3y) sampled at 1,500 scattered points of [-1, 1]^2.
+  std::string terrain_points() const {
+    const std::string file = path("terrain.xyz");
+    std::ofstream out(file);
+    out.precision(17);
+    for (int i = 0; i < 1500; ++i) {
+      const double x = 2 * std::fmod(0.5 + i * 0.7548776662466927, 1.0) - 1;
+      const double y = 2 * std::fmod(0.5 + i * 0.5698402909980532, 1.0) - 1;
+      out << x << ' ' << y << ' ' << 0.1 * std::sin(2 * x) * std::cos(3 * y) << '\n';
+    }
+    return file;
+  }
+
+  std::string mesh_file(const TriangleSoup& soup, const std::string& name) const {
+    write_soup(soup, path(name));
+    return path(name);
+  }
+
+  static PipelineConfig small_config() {
+    PipelineConfig config;
+    config.reconstruct.params.columns = config.reconstruct.params.rows = 40;
+    config.quality.params.distance_samples = 20000;
+    return config;
+  }
+
+  fs::path dir_;
+};
+
+std::vector<std::string> stage_names(const PipelineResult& r) {
+  std::vector<std::string> names;
+  for (const StageRecord& s : r.stages) names.push_back(s.name);
+  return names;
+}
+
+TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
+  PipelineConfig config = small_config();
+  config.simplify.ratio = 0.5;
+  const PipelineResult r = run_pipeline(mesh_file(test::icosphere(3), "sphere.off"), config);
+  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
+  EXPECT_FALSE(r.from_points);
+  EXPECT_TRUE(r.stages[1].ran);
+  EXPECT_FALSE(r.stages[2].ran);  // smoothing is off by default
+  EXPECT_NEAR(static_cast<double>(r.final_quality.faces), 640.0, 640 * 0.02);  // the target +-1 %, enhance +-1 %
+  EXPECT_TRUE(r.fem.ready) << (r.fem.problems.empty() ? "" : r.fem.problems.front());
+  ASSERT_TRUE(r.tet_quality && r.final_quality.volume);
+  // TetGen fills the closed polyhedron: the tets' volume is the surface's, up to the rounding of
+  // the Steiner points TetGen places on the facets (1e-6 relative, as in shared_tet_test.cpp).
+  EXPECT_NEAR(r.tet_quality->volume, *r.final_quality.volume, 1e-6 * *r.final_quality.volume);
+  EXPECT_EQ(r.tet_quality->inverted_tets, 0u);
+  ASSERT_TRUE(r.final_quality.reference);
+  EXPECT_LT(r.final_quality.reference->hausdorff_relative, 0.01);  // half the faces of a unit sphere
+  EXPECT_EQ(r.final_quality.genus, 0);
+}
+
+TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
+  const PipelineResult r = run_pipeline(terrain_points(), small_config());
+  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
+  EXPECT_TRUE(r.from_points);
+  EXPECT_EQ(r.input_points, 1500u);
+  // The automatic ratio for a terrain keeps a tenth of the faces.
+  EXPECT_NEAR(static_cast<double>(r.stages[1].faces_after), 0.1 * static_cast<double>(r.stages[1].faces_before),
+              0.02 * static_cast<double>(r.stages[1].faces_before));
+  EXPECT_EQ(r.final_quality.boundary_loops, 1u);
+  ASSERT_TRUE(r.fem.ready) << r.fem.problems.front();
+  ASSERT_TRUE(r.extrusion_depth);
+  // The block's volume: over each top triangle, its projected area times its mean height above
+  // the base (exact for a piecewise-linear top).
+  double lowest = INFINITY;
+  for (const Vec3& p : r.surface.points) lowest = std::min(lowest, p.z());
+  const double base = lowest - *r.extrusion_depth;
+  double volume = 0;
+  for (const Triangle& t : r.surface.triangles) {
+    const Vec3 &a = r.surface.points[t[0]], &b = r.surface.points[t[1]], &c = r.surface.points[t[2]];
+    const double projected = 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    volume += projected * ((a.z() + b.z() + c.z()) / 3 - base);
+  }
+  EXPECT_NEAR(r.tet_quality->volume, volume, 1e-6 * volume);  // Steiner points rounded, as above
+}
+
+TEST_F(Pipeline, WhatNoStageMendsIsRefusedBeforeAnyWork) {
+  // Two interpenetrating cubes: self-intersections.
+  const TriangleSoup crossing = test::merged(test::cube(), test::translated(test::cube(), Vec3(0.5, 0.5, 0.5)));
+  EXPECT_THROW(run_pipeline(mesh_file(crossing, "crossing.off"), small_config()), PipelineFailed);
+  // An open surface with two boundary loops (a grid with a hole) cannot be closed into a block.
+  TriangleSoup holed = test::grid(5);
+  holed.triangles.erase(holed.triangles.begin() + 24, holed.triangles.begin() + 26);  // the middle cell
+  try {
+    run_pipeline(mesh_file(holed, "holed.off"), small_config());
+    ADD_FAILURE() << "an open surface with a hole was accepted";
+  } catch (const PipelineFailed& e) {
+    EXPECT_NE(std::string(e.what()).find("2 boundary loops"), std::string::npos) << e.what();
+  }
+  // Switched off, the tets no longer need a closable surface.
+  PipelineConfig surface_only = small_config();
+  surface_only.tetrahedralize.enabled = false;
+  EXPECT_FALSE(run_pipeline(mesh_file(holed, "holed.off"), surface_only).tets);
+}
+
+TEST_F(Pipeline, BadInputIsInvalidInputNamingTheFile) {
+  std::ofstream(path("broken.off")) << "OFF\n3 1 0\n0 0 0\n1 0 0\n";  // truncated
+  try {
+    run_pipeline(path("broken.off"), small_config());
+    ADD_FAILURE() << "a truncated file was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.off"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(run_pipeline(path("missing.xyz"), small_config()), Error);
+}
+
+TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
+  PipelineConfig config = small_config();
+  config.simplify.ratio = 0.5;
+  const std::string input = mesh_file(test::icosphere(2), "sphere.off");
+  const std::string out = path("out");
+  prepare_output_dir(out);
+  const PipelineResult r = run_pipeline(input, config);
+  const nlohmann::ordered_json run = {{"input", input}};
+  const std::vector<std::string> files = write_pipeline_outputs(r, config, out, run);
+  EXPECT_EQ(files, (std::vector<std::string>{"surface.ply", "tets.msh", "report.html", "report.json", "report.vtu",
+                                             "pipeline.json"}));
+  std::size_t entries = 0;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    ++entries;
+    EXPECT_NE(entry.path().filename().string().rfind(".meshprep-staging", 0), 0u) << "staging folder left behind";
+  }
+  EXPECT_EQ(entries, files.size());
+  EXPECT_EQ(read_soup(out + "/surface.ply").triangles.size(), r.surface.triangles.size());
+
+  // pipeline.json is a configuration file: it replays the run.
+  PipelineConfig replayed;
+  read_config_file(out + "/pipeline.json", replayed);
+  EXPECT_EQ(to_json(replayed), to_json(config));
+  std::ifstream summary_file(out + "/report.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  EXPECT_EQ(summary["fem_ready"], true);
+  EXPECT_EQ(summary["stages"].size(), 6u);
+  EXPECT_EQ(summary["quality"]["faces"], r.surface.triangles.size());
+
+  // Another format replaces the tets; no tets at all removes them.
+  config.tetrahedralize.format = "vtu";
+  write_pipeline_outputs(r, config, out, run);
+  EXPECT_FALSE(fs::exists(out + "/tets.msh"));
+  EXPECT_TRUE(fs::exists(out + "/tets.vtu"));
+  PipelineResult no_tets = r;
+  no_tets.tets.reset();
+  write_pipeline_outputs(no_tets, config, out, run);
+  EXPECT_FALSE(fs::exists(out + "/tets.vtu"));
+}
+
+TEST_F(Pipeline, AnOutputFolderThatCannotBeMadeIsAnIoError) {
+  std::ofstream(path("file.txt")) << "x";
+  EXPECT_THROW(prepare_output_dir(path("file.txt")), IoError);
+  EXPECT_THROW(prepare_output_dir(path("file.txt") + "/sub"), IoError);
+}
+
+TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {
+  PipelineConfig config = small_config();
+  config.tetrahedralize.enabled = false;
+  std::vector<std::string> started, finished;
+  PipelineObserver observer;
+  observer.stage_started = [&](const std::string& name) { started.push_back(name); };
+  observer.stage_finished = [&](const StageRecord& s) { finished.push_back(s.name); };
+  run_pipeline(mesh_file(test::icosphere(2), "sphere.off"), config, observer);
+  EXPECT_EQ(started, (std::vector<std::string>{"check", "enhance", "quality"}));  // the others are skipped
+  EXPECT_EQ(finished, (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
+}
+
+}  // namespace
+}  // namespace meshprep
