@@ -142,7 +142,7 @@ Action add_pipeline_command(CLI::App& app) {
       ->excludes(ratio);
   cmd->add_option("--extrude-base", o->extrude_base,
                   "An open height field (terrain) becomes a block with its base this far below its lowest point "
-                  "(default: 5 % of the bounding-box diagonal)")
+                  "(default: 2 % of the bounding-box diagonal)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node")
       ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));

@@ -90,7 +90,7 @@ Action add_quality_command(CLI::App& app) {
   cmd->add_option("--csv", o->csv, "Write one row per face to FILE");
   cmd->add_option("--vtk", o->vtk, "Write the mesh with per-face metrics as cell data and the surface variation "
                   "of each vertex as point data (legacy VTK, for ParaView)");
-  cmd->add_option("--html", o->html, "Write a self-contained HTML report with histograms");
+  cmd->add_option("--html", o->html, "Write a self-contained HTML report with pictures of the surface and histograms");
   cmd->add_option("--fail-on", o->fail_on,
                   "Quality gate: exit 1 if any condition holds, e.g. \"radius_ratio.p95>3,closed=false\"");
   cmd->add_option("--worst", o->worst, "How many worst faces to list")->capture_default_str();

@@ -78,7 +78,7 @@ struct PipelineConfig {
     /// lowest point: extrude_base in absolute units if > 0, else extrude_base_relative x the
     /// bounding-box diagonal.
     double extrude_base = 0;
-    double extrude_base_relative = 0.05;
+    double extrude_base_relative = 0.02;
     std::string format = "msh";  ///< msh, vtu, mesh, inp or node: the file tets.<format>
     TetExportOptions export_options;
   } tetrahedralize;
