@@ -92,7 +92,10 @@ int run_pipeline_command(const PipelineOptions& o) {
   std::unique_ptr<ProgressBar> bar;
   PipelineObserver observer;
   if (!o.quiet) {
-    observer.stage_started = [&bar](const std::string& stage) { bar = std::make_unique<ProgressBar>(stage); };
+    observer.stage_started = [&bar](const std::string& stage) {
+      bar = std::make_unique<ProgressBar>(stage);
+      bar->update(0);  // stages without progress (TetGen) still show their name
+    };
     observer.progress = [&bar](double fraction) {
       if (bar) bar->update(fraction);
     };

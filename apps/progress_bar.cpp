@@ -10,7 +10,7 @@ namespace meshprep::cli {
 
 ProgressBar::ProgressBar(std::string label)
     : label_(std::move(label)), active_(::isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()),
-      last_draw_(start_) {}
+      last_draw_(start_ - std::chrono::seconds(1)) {}  // the first update draws at once
 
 ProgressBar::~ProgressBar() { finish(); }
 
