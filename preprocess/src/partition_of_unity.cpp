@@ -158,7 +158,7 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   }
   // ... then, where sigma is above the threshold, more samples and a larger support; the patches.
   std::vector<char> grown(cells.size(), 0);
-  std::vector<std::optional<HeightMapSpline>> fits(cells.size());
+  std::vector<std::optional<DuchonSpline>> fits(cells.size());
   tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t c) {
     if (variation_[c] > threshold_ && grown_count > nearest[c].size()) {
       nearest[c].resize(grown_count);
@@ -176,7 +176,7 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
     fits[c].emplace(sites, values, params.polynomial);
   });
   fits_.reserve(cells.size());
-  for (std::optional<HeightMapSpline>& fit : fits) fits_.push_back(std::move(*fit));
+  for (std::optional<DuchonSpline>& fit : fits) fits_.push_back(std::move(*fit));
   grown_ = static_cast<std::size_t>(std::count(grown.begin(), grown.end(), 1));
   largest_radius_ = *std::max_element(radii_.begin(), radii_.end());
   index_->centres = std::make_unique<PlanarIndex>(centres_);

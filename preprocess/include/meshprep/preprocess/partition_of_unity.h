@@ -4,15 +4,16 @@
 /// unity (modified Shepard method) over the cells of a k-d tree with leaf size K. Each cell is a
 /// subdomain centred at its centre c_i with radius R_i = enlargement x half its diagonal (the cells
 /// tile the domain, so every point of the data's bounding rectangle lies in at least one
-/// support); its local approximant f_i is the thin-plate height map (eq. 3, thin_plate_spline.h)
-/// interpolating the `neighbors` samples nearest to c_i; the blend is
+/// support); its local approximant f_i is a height map interpolating the `neighbors` samples
+/// nearest to c_i: Duchon's spline with phi = r^(5/2) (thin_plate_spline.h), eq. (3)'s thin plate
+/// with a slightly smoother kernel; the blend is
 ///   f(x) = sum_i W_i(x) f_i(x) / sum_i W_i(x),   W_i(x) = W(|x - c_i| / R_i),
 /// with Wendland's compactly supported W(r) = (1 - r)^4 (4 r + 1) for r < 1, 0 beyond.
 /// Heights are measured from the PCA plane of the whole set (not z-up): local_frame.h.
 /// Curvature analysis (the paper's Section 3): each patch's surface variation sigma (PCA of its
 /// samples, local_frame.h); where sigma exceeds a threshold the patch "attracts data from
 /// neighbouring cells and increases its r-sphere": its support radius and its sample count grow.
-/// docs/reconstruction.md has the measurements behind the defaults (jacksboro DEM: RMS 18.74 m
+/// docs/reconstruction.md has the measurements behind the defaults (jacksboro DEM: RMS 18.53 m
 /// on held-out points; the global thin-plate spline: 18.7 m).
 
 #include "meshprep/core/mesh.h"
@@ -103,7 +104,7 @@ class PartitionOfUnity {
   Eigen::AlignedBox2d footprint_;
   std::vector<Eigen::Vector2d> centres_;
   std::vector<double> radii_, variation_;
-  std::vector<HeightMapSpline> fits_;
+  std::vector<DuchonSpline> fits_;
   std::size_t grown_ = 0;
   double median_spacing_ = 0;
   double threshold_ = 0;
