@@ -250,16 +250,6 @@ TEST(DuchonSpline, InterpolatesAndReproducesPlanesAndQuadrics) {
   EXPECT_GT(std::abs(bumped.evaluate(0.1, -0.2) - HeightMapSpline(sites, bump).evaluate(0.1, -0.2)), 1e-6);
 }
 
-TEST(DuchonSpline, ManyPointsAtOnceEqualOneAtATime) {
-  const std::vector<Eigen::Vector2d> sites = scattered_sites(30);
-  Eigen::VectorXd heights(30);
-  for (Eigen::Index i = 0; i < 30; ++i) heights[i] = std::sin(3 * sites[static_cast<std::size_t>(i)].x()) + sites[static_cast<std::size_t>(i)].y();
-  const DuchonSpline spline(sites, heights);
-  const Eigen::ArrayXd x = Eigen::ArrayXd::LinSpaced(17, -1.2, 1.1), y = Eigen::ArrayXd::LinSpaced(17, 0.9, -1.3);
-  const Eigen::ArrayXd z = spline.evaluate(x, y);
-  for (Eigen::Index i = 0; i < x.size(); ++i) EXPECT_NEAR(z[i], spline.evaluate(x[i], y[i]), kTight);
-}
-
 TEST(DuchonSpline, RefusesDegenerateSites) {
   const Eigen::VectorXd three = Eigen::VectorXd::Zero(3);
   EXPECT_THROW(DuchonSpline({{0, 0}, {1, 1}, {2, 2}}, three), InvalidInput);  // collinear

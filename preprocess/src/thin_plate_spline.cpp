@@ -265,24 +265,12 @@ DuchonSpline::DuchonSpline(const std::vector<Eigen::Vector2d>& sites, const Eige
   polynomial_ = s.polynomial;
 }
 
-// Vectorised over the sites (Eigen packets): the squared distances are an expression, evaluated
-// packet by packet, so nothing is allocated.
-double DuchonSpline::kernel_part(double qx, double qy) const {
-  const auto squared = (site_x_ - qx).square() + (site_y_ - qy).square();
-  return (gamma_ * squared * squared.sqrt().sqrt()).sum();
-}
-
+// The kernel part is vectorised over the sites (Eigen packets); the squared distances are an
+// expression, evaluated packet by packet, so nothing is allocated.
 double DuchonSpline::evaluate(double x, double y) const {
   const Eigen::Vector2d q = (Eigen::Vector2d(x, y) - centre_) / scale_;
-  return kernel_part(q.x(), q.y()) + monomials(q).head(polynomial_.size()).dot(polynomial_);
-}
-
-Eigen::ArrayXd DuchonSpline::evaluate(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y) const {
-  const Eigen::ArrayXd qx = (x - centre_.x()) / scale_, qy = (y - centre_.y()) / scale_;
-  Eigen::ArrayXd z = polynomial_[0] + polynomial_[1] * qx + polynomial_[2] * qy;
-  if (polynomial_.size() == 6) z += polynomial_[3] * qx.square() + polynomial_[4] * qx * qy + polynomial_[5] * qy.square();
-  for (Index i = 0; i < x.size(); ++i) z[i] += kernel_part(qx[i], qy[i]);
-  return z;
+  const auto squared = (site_x_ - q.x()).square() + (site_y_ - q.y()).square();
+  return (gamma_ * squared * squared.sqrt().sqrt()).sum() + monomials(q).head(polynomial_.size()).dot(polynomial_);
 }
 
 }  // namespace meshprep

@@ -82,12 +82,13 @@ class PartitionOfUnity {
     double height = 0;      ///< f(x, y), the height above the reference plane
     double weight_sum = 0;  ///< sum_i W_i(x, y); 0 outside every support (height then 0)
     double variation = 0;   ///< the patches' sigma blended alike, sum_i W_i sigma_i / sum_i W_i
+    void normalise();       ///< from the weighted sums to the blend (divides by weight_sum if > 0)
   };
   /// f at frame coordinates (x, y).
   Value evaluate(double x, double y) const;
-  /// f at every grid vertex, computed patch by patch (vectorised, in parallel; the sums are taken
-  /// in patch order, so the result does not depend on the thread count). Equal to evaluate() at
-  /// each vertex up to round-off.
+  /// f at every grid vertex, computed tile by tile in parallel (the sums are taken in patch
+  /// order, so the result does not depend on the thread count). Equal to evaluate() at each vertex
+  /// up to round-off.
   std::vector<Value> evaluate_grid(const PlaneGrid& grid) const;
   /// Each patch's surface variation sigma (of its samples, before any growth).
   const std::vector<double>& patch_variation() const { return variation_; }
@@ -99,6 +100,9 @@ class PartitionOfUnity {
   Vec3 surface_point(double x, double y) const { return frame_.to_world(Vec3(x, y, evaluate(x, y).height)); }
 
  private:
+  // Adds patch p's weighted height and sigma at (x, y), at this squared distance from its centre.
+  void add_patch(std::size_t p, double x, double y, double squared_distance, Value& sum) const;
+
   struct Index;
   LocalFrame frame_;
   Eigen::AlignedBox2d footprint_;

@@ -129,12 +129,8 @@ class DuchonSpline {
                HeightMapPolynomial polynomial = HeightMapPolynomial::linear);
 
   double evaluate(double x, double y) const;
-  /// z at the points (x[i], y[i]): the fast path for many points. Equal to evaluate() up to
-  /// round-off.
-  Eigen::ArrayXd evaluate(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y) const;
 
  private:
-  double kernel_part(double qx, double qy) const;  // sum_j gamma_j phi(|q - S_j|), scaled coordinates
 
   Eigen::Vector2d centre_;
   double scale_ = 1;
