@@ -1,5 +1,7 @@
 #include "meshprep/preprocess/thin_plate_spline.h"
 
+#include "bordered_solve.h"
+
 #include "meshprep/core/errors.h"
 
 #include <Eigen/Cholesky>
@@ -26,8 +28,8 @@ constexpr double kRankThreshold = 1e-10;
 // 11 ns), so these stay scalar.
 double volume_kernel(double squared) { return std::sqrt(squared); }
 double thin_plate_kernel(double squared) { return squared > 0 ? 0.5 * squared * std::log(squared) : 0.0; }
-// Duchon's phi = r^(5/2) = t sqrt(sqrt(t)), t = r^2.
-double duchon_kernel(double squared) { return squared * std::sqrt(std::sqrt(squared)); }
+// Duchon's phi = r^(5/2) = t sqrt(sqrt(t)), t = r^2 (a lambda, so that kernel_matrix inlines it).
+constexpr auto duchon_kernel = [](double squared) { return squared * std::sqrt(std::sqrt(squared)); };
 
 // Centres as columns, translated to their centroid and divided by their largest distance from it.
 template <int D>
@@ -171,19 +173,6 @@ const char* height_map_degeneracy(HeightMapPolynomial polynomial) {
   return polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic";
 }
 
-// Eq. (2) for a height map with kernel phi on unit-size sites q, `smoothing` added to A's diagonal.
-template <class Kernel>
-BorderedSystem::Solution height_map_solution(const Eigen::Matrix2Xd& q, const VectorXd& heights,
-                                             HeightMapPolynomial polynomial, Kernel phi, double smoothing,
-                                             const char* who) {
-  MatrixXd kernel = kernel_matrix(q, phi, who);
-  kernel.diagonal().array() += smoothing;
-  const Index terms = term_count(polynomial);
-  const BorderedSystem system(std::move(kernel), height_map_polynomial_matrix(q, terms), 1.0, terms,
-                              height_map_degeneracy(polynomial), who);
-  return system.solve(heights);
-}
-
 // The volume spline's system on unit-size centres; coplanar centres (rank 3) are accepted.
 BorderedSystem volume_system(const UnitCentres<3>& unit, const char* who) {
   return BorderedSystem(kernel_matrix(unit.points, volume_kernel, who), volume_polynomial_matrix(unit.points), -1.0, 3,
@@ -236,7 +225,12 @@ HeightMapSpline::HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, cons
     scaled_sites_.resize(2, 0);
     return;
   }
-  const BorderedSystem::Solution s = height_map_solution(unit.points, heights, polynomial, thin_plate_kernel, smoothing, who);
+  MatrixXd kernel = kernel_matrix(unit.points, thin_plate_kernel, who);
+  kernel.diagonal().array() += smoothing;
+  const Index terms = term_count(polynomial);
+  const BorderedSystem system(std::move(kernel), height_map_polynomial_matrix(unit.points, terms), 1.0, terms,
+                              height_map_degeneracy(polynomial), who);
+  const BorderedSystem::Solution s = system.solve(heights);
   scaled_sites_ = std::move(unit.points);
   gamma_ = s.gamma;
   polynomial_ = s.polynomial;
@@ -256,7 +250,10 @@ DuchonSpline::DuchonSpline(const std::vector<Eigen::Vector2d>& sites, const Eige
                            HeightMapPolynomial polynomial) {
   constexpr const char* who = "DuchonSpline";
   const UnitCentres<2> unit = height_map_sites(sites, heights, polynomial, who);
-  const BorderedSystem::Solution s = height_map_solution(unit.points, heights, polynomial, duchon_kernel, 0.0, who);
+  const detail::BorderedSolution s =
+      detail::solve_bordered(kernel_matrix(unit.points, duchon_kernel, who),
+                             height_map_polynomial_matrix(unit.points, term_count(polynomial)), heights, kRankThreshold,
+                             height_map_degeneracy(polynomial), who);
   centre_ = unit.centre;
   scale_ = unit.scale;
   site_x_ = unit.points.row(0).transpose().array();
