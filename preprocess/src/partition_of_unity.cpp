@@ -5,6 +5,7 @@
 
 #include <nanoflann.hpp>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,10 +104,10 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   std::vector<std::uint32_t> order(points.size());
   std::iota(order.begin(), order.end(), 0u);
   std::vector<Eigen::AlignedBox2d> cells;
-  split_cells(planar, order, 0, order.size(), footprint_, params.leaf_size, cells);
-
   index_ = std::make_unique<Index>();
-  index_->samples = std::make_unique<PlanarIndex>(std::move(planar));
+  // The cells and the samples' k-d tree do not depend on each other: built side by side.
+  tbb::parallel_invoke([&] { split_cells(planar, order, 0, order.size(), footprint_, params.leaf_size, cells); },
+                       [&] { index_->samples = std::make_unique<PlanarIndex>(planar); });
   const PlanarIndex& samples = *index_->samples;
   // Each sample's distance to its nearest neighbour in the plane. A height field has one height
   // per place: a sample within 1/10 of the height difference from its nearest neighbour (a
