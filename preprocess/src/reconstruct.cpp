@@ -81,7 +81,7 @@ struct GridTriangles {
 
 // Marks the triangles whose centre lies within max_gap of a sample (in the plane): each sample
 // covers, row by row, an interval of centres. O(samples x rows of the disc), no per-triangle
-// search; rows in parallel, each with the samples (sorted by row) that can reach it.
+// search. In parallel over bands of rows, each with the samples (sorted by row) that can reach it.
 std::vector<char> near_samples(const std::vector<Vector2d>& samples, const PlaneGrid& grid, double max_gap) {
   const GridTriangles triangles{grid};
   std::vector<char> covered(triangles.count(), 0);
@@ -91,24 +91,23 @@ std::vector<char> near_samples(const std::vector<Vector2d>& samples, const Plane
   std::vector<Vector2d> q(samples.size());  // in grid steps from the origin, by row
   for (std::size_t s = 0; s < samples.size(); ++s) q[s] = (samples[s] - grid.origin).cwiseQuotient(grid.step);
   std::sort(q.begin(), q.end(), [](const Vector2d& a, const Vector2d& b) { return a.y() < b.y(); });
-  tbb::parallel_for(0LL, std::max(rows, 0LL), [&](long long j) {
-    for (int k = 0; k < 2; ++k) {
-      // The samples that may reach this row (one step of slack), then the exact test of the row
-      // range a sample covers.
-      const double row = static_cast<double>(j) + offsets[k][1];
-      const auto by_row = [](const Vector2d& a, double y) { return a.y() < y; };
-      auto s = std::lower_bound(q.begin(), q.end(), row - reach.y() - 1, by_row);
-      for (; s != q.end() && s->y() <= row + reach.y() + 1; ++s) {
-        const long long j0 = std::max(0LL, static_cast<long long>(std::ceil(s->y() - reach.y() - offsets[k][1])));
-        const long long j1 = std::min(rows - 1, static_cast<long long>(std::floor(s->y() + reach.y() - offsets[k][1])));
-        if (j < j0 || j > j1) continue;
-        const double dy = (row - s->y()) * grid.step.y();
-        const double half = std::sqrt(std::max(0.0, max_gap * max_gap - dy * dy)) / grid.step.x();
-        const long long i0 = std::max(0LL, static_cast<long long>(std::ceil(s->x() - half - offsets[k][0])));
-        const long long i1 = std::min(columns - 1, static_cast<long long>(std::floor(s->x() + half - offsets[k][0])));
-        for (long long i = i0; i <= i1; ++i) covered[2 * static_cast<std::size_t>(j * columns + i) + static_cast<std::size_t>(k)] = 1;
+  constexpr long long kBand = 32;  // rows per task
+  tbb::parallel_for(0LL, (rows + kBand - 1) / kBand, [&](long long band) {
+    const long long first = band * kBand, last = std::min(rows, first + kBand) - 1;
+    auto s = std::lower_bound(q.begin(), q.end(), static_cast<double>(first) - reach.y() - 1,
+                              [](const Vector2d& a, double y) { return a.y() < y; });
+    for (; s != q.end() && s->y() <= static_cast<double>(last) + reach.y() + 1; ++s)
+      for (int k = 0; k < 2; ++k) {
+        const long long j0 = std::max(first, static_cast<long long>(std::ceil(s->y() - reach.y() - offsets[k][1])));
+        const long long j1 = std::min(last, static_cast<long long>(std::floor(s->y() + reach.y() - offsets[k][1])));
+        for (long long j = j0; j <= j1; ++j) {
+          const double dy = (static_cast<double>(j) + offsets[k][1] - s->y()) * grid.step.y();
+          const double half = std::sqrt(std::max(0.0, max_gap * max_gap - dy * dy)) / grid.step.x();
+          const long long i0 = std::max(0LL, static_cast<long long>(std::ceil(s->x() - half - offsets[k][0])));
+          const long long i1 = std::min(columns - 1, static_cast<long long>(std::floor(s->x() + half - offsets[k][0])));
+          for (long long i = i0; i <= i1; ++i) covered[2 * static_cast<std::size_t>(j * columns + i) + static_cast<std::size_t>(k)] = 1;
+        }
       }
-    }
   });
   return covered;
 }
