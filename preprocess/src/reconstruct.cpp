@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numeric>
 
 namespace meshprep {
@@ -65,16 +66,16 @@ struct GridTriangles {
   void around(std::uint32_t v, std::vector<std::uint32_t>& triangles) const {
     triangles.clear();
     const std::size_t i = v % grid.columns, j = v / grid.columns;
-    auto add = [&](std::size_t ci, std::size_t cj, int k) {
-      triangles.push_back(static_cast<std::uint32_t>(2 * (cj * cells_x() + ci) + static_cast<std::size_t>(k)));
+    auto add = [&](std::size_t ci, std::size_t cj, std::initializer_list<std::size_t> ks) {
+      for (const std::size_t k : ks) triangles.push_back(static_cast<std::uint32_t>(2 * (cj * cells_x() + ci) + k));
     };
     if (j > 0) {
-      if (i > 0) add(i - 1, j - 1, 0), add(i - 1, j - 1, 1);
-      if (i < cells_x()) add(i, j - 1, 1);
+      if (i > 0) add(i - 1, j - 1, {0, 1});
+      if (i < cells_x()) add(i, j - 1, {1});
     }
     if (j + 1 < grid.rows) {
-      if (i > 0) add(i - 1, j, 0);
-      if (i < cells_x()) add(i, j, 0), add(i, j, 1);
+      if (i > 0) add(i - 1, j, {0});
+      if (i < cells_x()) add(i, j, {0, 1});
     }
   }
 };
