@@ -117,7 +117,7 @@ Action add_reconstruct_command(CLI::App& app) {
   cmd->add_option("--leaf-size", o->leaf_size, "K: samples per k-d tree cell (one local patch each)")
       ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
       ->capture_default_str();
-  cmd->add_option("--neighbors", o->neighbors, "Samples interpolated by each cell's thin-plate patch")
+  cmd->add_option("--neighbors", o->neighbors, "Samples interpolated by each cell's patch (a Duchon r^2.5 spline)")
       ->check(CLI::Range(std::size_t(3), std::size_t(1000)))
       ->capture_default_str();
   cmd->add_option("--variation-threshold", o->variation_threshold,

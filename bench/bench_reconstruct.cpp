@@ -260,7 +260,7 @@ int main(int argc, char** argv) {
       predicted[i] = held_out[i].z() + (surface - held_out[i]).dot(normal) / std::abs(normal.z());
     }
     const double seconds = median_seconds(5, [&] { meshprep::reconstruct_surface(sample, params); });
-    print_row("meshprep partition of unity (thin-plate patches)", errors(held_out, predicted), seconds);
+    print_row("meshprep partition of unity (Duchon r^2.5 patches)", errors(held_out, predicted), seconds);
     std::vector<double> sigma = pu.patch_variation();
     std::sort(sigma.begin(), sigma.end());
     auto at = [&](double q) { return sigma[static_cast<std::size_t>(q * static_cast<double>(sigma.size() - 1))]; };

@@ -194,9 +194,10 @@ TEST(SharedPartitionOfUnity, JacksboroHeldOutPoints) {
   }
   EXPECT_EQ(count, 128632u);
   const double rms = std::sqrt(squared / static_cast<double>(count));
-  // Goal 18.7 m (the global thin-plate spline). Measured 18.74 m with the default p90 growth,
-  // 18.77 m without it (bench/RESULTS.md): the bound fails if the growth stops helping.
-  EXPECT_LT(rms, 18.75) << rms;
+  // Goal 18.7 m (the global thin-plate spline). Measured 18.535 m with the defaults (Duchon
+  // r^(5/2) patches, p90 growth), 18.564 m without the growth; thin-plate patches gave 18.74 m
+  // (bench/RESULTS.md, docs/reconstruction.md).
+  EXPECT_LE(rms, 18.7) << rms;
   RecordProperty("rms_m", std::to_string(rms));
   std::cout << "jacksboro held-out RMS " << rms << " m\n";
 }

@@ -224,6 +224,39 @@ TEST(HeightMapSpline, RefusesDegenerateSites) {
   EXPECT_THROW(HeightMapSpline(circle, Eigen::VectorXd::Zero(8), HeightMapPolynomial::quadratic), InvalidInput);
 }
 
+// --- DuchonSpline ---------------------------------------------------------------------------
+
+TEST(DuchonSpline, InterpolatesAndReproducesPlanesAndQuadrics) {
+  const std::vector<Eigen::Vector2d> sites = scattered_sites(20);
+  auto quadric = [](double x, double y) { return 0.2 - x + 0.5 * y + 0.7 * x * x - 0.3 * x * y + 1.1 * y * y; };
+  Eigen::VectorXd plane(20), bump(20), curved(20);
+  for (Eigen::Index i = 0; i < 20; ++i) {
+    const Eigen::Vector2d& s = sites[static_cast<std::size_t>(i)];
+    plane[i] = 1.5 + 0.3 * s.x() - 0.8 * s.y();
+    bump[i] = std::exp(-s.squaredNorm());
+    curved[i] = quadric(s.x(), s.y());
+  }
+  const DuchonSpline flat(sites, plane), bumped(sites, bump), quadratic(sites, curved, HeightMapPolynomial::quadratic);
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0.1, 0.2}, {-0.9, 0.4}, {2.0, -3.0}}) {
+    EXPECT_NEAR(flat.evaluate(x, y), 1.5 + 0.3 * x - 0.8 * y, kTight);
+    EXPECT_NEAR(quadratic.evaluate(x, y), quadric(x, y), 1e-10);
+  }
+  for (Eigen::Index i = 0; i < 20; ++i) {
+    const Eigen::Vector2d& s = sites[static_cast<std::size_t>(i)];
+    EXPECT_NEAR(bumped.evaluate(s.x(), s.y()), bump[i], 1e-10);
+  }
+  // Between the sites it is a smooth surface close to the bump, not the thin plate's surface.
+  EXPECT_NEAR(bumped.evaluate(0.1, -0.2), std::exp(-0.05), 0.05);
+  EXPECT_GT(std::abs(bumped.evaluate(0.1, -0.2) - HeightMapSpline(sites, bump).evaluate(0.1, -0.2)), 1e-6);
+}
+
+TEST(DuchonSpline, RefusesDegenerateSites) {
+  const Eigen::VectorXd three = Eigen::VectorXd::Zero(3);
+  EXPECT_THROW(DuchonSpline({{0, 0}, {1, 1}, {2, 2}}, three), InvalidInput);  // collinear
+  EXPECT_THROW(DuchonSpline({{0, 0}, {1, 0}, {1, 0}}, three), InvalidInput);  // duplicate
+  EXPECT_THROW(DuchonSpline({{0, 0}, {1, 0}}, Eigen::VectorXd::Zero(2)), InvalidInput);  // too few
+}
+
 // --- VolumeSpline ---------------------------------------------------------------------------
 
 TEST(VolumeSpline, ReproducesAffineDataWithZeroEnergy) {

@@ -5,6 +5,7 @@
 
 #include <nanoflann.hpp>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,10 +104,10 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   std::vector<std::uint32_t> order(points.size());
   std::iota(order.begin(), order.end(), 0u);
   std::vector<Eigen::AlignedBox2d> cells;
-  split_cells(planar, order, 0, order.size(), footprint_, params.leaf_size, cells);
-
   index_ = std::make_unique<Index>();
-  index_->samples = std::make_unique<PlanarIndex>(std::move(planar));
+  // The cells and the samples' k-d tree do not depend on each other: built side by side.
+  tbb::parallel_invoke([&] { split_cells(planar, order, 0, order.size(), footprint_, params.leaf_size, cells); },
+                       [&] { index_->samples = std::make_unique<PlanarIndex>(planar); });
   const PlanarIndex& samples = *index_->samples;
   // Each sample's distance to its nearest neighbour in the plane. A height field has one height
   // per place: a sample within 1/10 of the height difference from its nearest neighbour (a
@@ -158,7 +159,7 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   }
   // ... then, where sigma is above the threshold, more samples and a larger support; the patches.
   std::vector<char> grown(cells.size(), 0);
-  std::vector<std::optional<HeightMapSpline>> fits(cells.size());
+  std::vector<std::optional<DuchonSpline>> fits(cells.size());
   tbb::parallel_for(std::size_t(0), cells.size(), [&](std::size_t c) {
     if (variation_[c] > threshold_ && grown_count > nearest[c].size()) {
       nearest[c].resize(grown_count);
@@ -176,7 +177,7 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
     fits[c].emplace(sites, values, params.polynomial);
   });
   fits_.reserve(cells.size());
-  for (std::optional<HeightMapSpline>& fit : fits) fits_.push_back(std::move(*fit));
+  for (std::optional<DuchonSpline>& fit : fits) fits_.push_back(std::move(*fit));
   grown_ = static_cast<std::size_t>(std::count(grown.begin(), grown.end(), 1));
   largest_radius_ = *std::max_element(radii_.begin(), radii_.end());
   index_->centres = std::make_unique<PlanarIndex>(centres_);
@@ -192,6 +193,20 @@ const std::vector<Vector2d>& PartitionOfUnity::sample_positions() const { return
 
 double PartitionOfUnity::median_sample_spacing() const { return median_spacing_; }
 
+void PartitionOfUnity::add_patch(std::size_t p, double x, double y, double squared_distance, Value& sum) const {
+  const double w = wendland_weight(std::sqrt(squared_distance) / radii_[p]);
+  if (w <= 0) return;
+  sum.weight_sum += w;
+  sum.height += w * fits_[p].evaluate(x, y);
+  sum.variation += w * variation_[p];
+}
+
+void PartitionOfUnity::Value::normalise() {
+  if (weight_sum <= 0) return;
+  height /= weight_sum;
+  variation /= weight_sum;
+}
+
 PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {
   const double query[2] = {x, y};
   thread_local std::vector<std::pair<std::uint32_t, double>> within;  // reused: no allocation per call
@@ -199,67 +214,53 @@ PartitionOfUnity::Value PartitionOfUnity::evaluate(double x, double y) const {
   nanoflann::SearchParams search;
   search.sorted = false;
   index_->centres->tree.radiusSearch(query, largest_radius_ * largest_radius_, within, search);
-  std::sort(within.begin(), within.end());  // a fixed summation order: deterministic results
-  Value value;  // sums first, then divided
-  for (const auto& [i, squared] : within) {
-    const double w = wendland_weight(std::sqrt(squared) / radii_[i]);
-    if (w <= 0) continue;
-    value.weight_sum += w;
-    value.height += w * fits_[i].evaluate(x, y);
-    value.variation += w * variation_[i];
-  }
-  if (value.weight_sum > 0) {
-    value.height /= value.weight_sum;
-    value.variation /= value.weight_sum;
-  }
+  std::sort(within.begin(), within.end());  // in patch order: deterministic sums, equal to evaluate_grid's
+  Value value;
+  for (const auto& [p, squared] : within) add_patch(p, x, y, squared, value);
+  value.normalise();
   return value;
 }
 
 std::vector<PartitionOfUnity::Value> PartitionOfUnity::evaluate_grid(const PlaneGrid& grid) const {
-  // What one patch adds to the grid vertices inside its support.
-  struct Contribution {
-    std::vector<std::uint32_t> vertex;
-    Eigen::ArrayXd weight, value;
+  // Square tiles of vertices, in parallel. Each adds up, in patch order, the patches whose
+  // support's bounding box meets it: no search per vertex, no sums across tiles, and sums that do
+  // not depend on the thread count.
+  constexpr std::size_t kTile = 16;
+  const std::size_t tiles_x = (grid.columns + kTile - 1) / kTile, tiles_y = (grid.rows + kTile - 1) / kTile;
+  struct Box {
+    std::size_t i0, i1, j0, j1;  // vertex columns [i0, i1), rows [j0, j1)
   };
-  std::vector<Contribution> parts(patches());
-  const auto last_column = static_cast<double>(grid.columns) - 1, last_row = static_cast<double>(grid.rows) - 1;
-  tbb::parallel_for(std::size_t(0), patches(), [&](std::size_t p) {
+  std::vector<Box> boxes(patches());
+  std::vector<std::vector<std::uint32_t>> meeting(tiles_x * tiles_y);  // the patches meeting each tile
+  auto first_at_or_after = [](double index, std::size_t count) {
+    return static_cast<std::size_t>(std::clamp(std::ceil(index), 0.0, static_cast<double>(count)));
+  };
+  for (std::size_t p = 0; p < patches(); ++p) {
     const Vector2d low = (centres_[p] - Vector2d::Constant(radii_[p]) - grid.origin).cwiseQuotient(grid.step);
     const Vector2d high = (centres_[p] + Vector2d::Constant(radii_[p]) - grid.origin).cwiseQuotient(grid.step);
-    const auto i0 = static_cast<std::size_t>(std::clamp(std::ceil(low.x()), 0.0, last_column + 1));
-    const auto i1 = static_cast<std::size_t>(std::clamp(std::floor(high.x()) + 1, 0.0, last_column + 1));
-    const auto j0 = static_cast<std::size_t>(std::clamp(std::ceil(low.y()), 0.0, last_row + 1));
-    const auto j1 = static_cast<std::size_t>(std::clamp(std::floor(high.y()) + 1, 0.0, last_row + 1));
-    std::vector<std::uint32_t>& vertex = parts[p].vertex;
-    std::vector<double> x, y, r;
-    for (std::size_t j = j0; j < j1; ++j)
-      for (std::size_t i = i0; i < i1; ++i) {
-        const Vector2d q = grid.at(i, j);
-        const double distance = (q - centres_[p]).norm() / radii_[p];
-        if (!(distance < 1)) continue;
-        vertex.push_back(static_cast<std::uint32_t>(j * grid.columns + i));
-        x.push_back(q.x());
-        y.push_back(q.y());
-        r.push_back(distance);
-      }
-    const auto n = static_cast<Eigen::Index>(vertex.size());
-    parts[p].value = fits_[p].evaluate(Eigen::Map<Eigen::ArrayXd>(x.data(), n), Eigen::Map<Eigen::ArrayXd>(y.data(), n));
-    parts[p].weight = Eigen::Map<Eigen::ArrayXd>(r.data(), n).unaryExpr([](double d) { return wendland_weight(d); });
+    Box& b = boxes[p];
+    b = {first_at_or_after(low.x(), grid.columns), first_at_or_after(std::floor(high.x()) + 1, grid.columns),
+         first_at_or_after(low.y(), grid.rows), first_at_or_after(std::floor(high.y()) + 1, grid.rows)};
+    if (b.i0 >= b.i1 || b.j0 >= b.j1) continue;
+    for (std::size_t tj = b.j0 / kTile; tj <= (b.j1 - 1) / kTile; ++tj)
+      for (std::size_t ti = b.i0 / kTile; ti <= (b.i1 - 1) / kTile; ++ti)
+        meeting[tj * tiles_x + ti].push_back(static_cast<std::uint32_t>(p));
+  }
+  std::vector<Value> values(grid.columns * grid.rows);
+  tbb::parallel_for(std::size_t(0), meeting.size(), [&](std::size_t t) {
+    const std::size_t i_begin = t % tiles_x * kTile, i_end = std::min(i_begin + kTile, grid.columns);
+    const std::size_t j_begin = t / tiles_x * kTile, j_end = std::min(j_begin + kTile, grid.rows);
+    for (const std::uint32_t p : meeting[t]) {
+      const Box& b = boxes[p];
+      for (std::size_t j = std::max(b.j0, j_begin); j < std::min(b.j1, j_end); ++j)
+        for (std::size_t i = std::max(b.i0, i_begin); i < std::min(b.i1, i_end); ++i) {
+          const Vector2d q = grid.at(i, j);
+          add_patch(p, q.x(), q.y(), (q - centres_[p]).squaredNorm(), values[j * grid.columns + i]);
+        }
+    }
+    for (std::size_t j = j_begin; j < j_end; ++j)
+      for (std::size_t i = i_begin; i < i_end; ++i) values[j * grid.columns + i].normalise();
   });
-  std::vector<Value> values(grid.columns * grid.rows);  // sums first, then divided
-  for (std::size_t p = 0; p < parts.size(); ++p)  // in patch order: deterministic sums
-    for (std::size_t k = 0; k < parts[p].vertex.size(); ++k) {
-      Value& sum = values[parts[p].vertex[k]];
-      const double w = parts[p].weight[static_cast<Eigen::Index>(k)];
-      sum.weight_sum += w;
-      sum.height += w * parts[p].value[static_cast<Eigen::Index>(k)];
-      sum.variation += w * variation_[p];
-    }
-  for (Value& value : values)
-    if (value.weight_sum > 0) {
-      value.height /= value.weight_sum;
-      value.variation /= value.weight_sum;
-    }
   return values;
 }
 

@@ -1,5 +1,7 @@
 #include "meshprep/preprocess/thin_plate_spline.h"
 
+#include "bordered_solve.h"
+
 #include "meshprep/core/errors.h"
 
 #include <Eigen/Cholesky>
@@ -26,6 +28,8 @@ constexpr double kRankThreshold = 1e-10;
 // 11 ns), so these stay scalar.
 double volume_kernel(double squared) { return std::sqrt(squared); }
 double thin_plate_kernel(double squared) { return squared > 0 ? 0.5 * squared * std::log(squared) : 0.0; }
+// Duchon's phi = r^(5/2) = t sqrt(sqrt(t)), t = r^2 (a lambda, so that kernel_matrix inlines it).
+constexpr auto duchon_kernel = [](double squared) { return squared * std::sqrt(std::sqrt(squared)); };
 
 // Centres as columns, translated to their centroid and divided by their largest distance from it.
 template <int D>
@@ -157,6 +161,18 @@ void check_count(std::size_t points, std::size_t minimum, const char* who) {
                        std::to_string(minimum) + " needed");
 }
 
+// A height map's sites at unit size, after checking its data.
+UnitCentres<2> height_map_sites(const std::vector<Eigen::Vector2d>& sites, const VectorXd& heights,
+                                HeightMapPolynomial polynomial, const char* who) {
+  check_count(sites.size(), static_cast<std::size_t>(term_count(polynomial)), who);
+  check_values(heights, sites.size(), who);
+  return unit_centres(sites, who);
+}
+
+const char* height_map_degeneracy(HeightMapPolynomial polynomial) {
+  return polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic";
+}
+
 // The volume spline's system on unit-size centres; coplanar centres (rank 3) are accepted.
 BorderedSystem volume_system(const UnitCentres<3>& unit, const char* who) {
   return BorderedSystem(kernel_matrix(unit.points, volume_kernel, who), volume_polynomial_matrix(unit.points), -1.0, 3,
@@ -196,28 +212,24 @@ Eigen::MatrixXd volume_spline_energy_matrix(const std::vector<Vec3>& centres) {
 HeightMapSpline::HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
                                  HeightMapPolynomial polynomial, double smoothing) {
   constexpr const char* who = "HeightMapSpline";
-  const Index terms = term_count(polynomial);
-  check_count(sites.size(), static_cast<std::size_t>(terms), who);
-  check_values(heights, sites.size(), who);
   if (!(smoothing >= 0)) throw InvalidInput(std::string(who) + ": smoothing must be >= 0");
-  UnitCentres<2> unit = unit_centres(sites, who);
+  UnitCentres<2> unit = height_map_sites(sites, heights, polynomial, who);
   centre_ = unit.centre;
   scale_ = unit.scale;
   if (std::isinf(smoothing)) {  // the limit: the least-squares polynomial, no kernel part
+    const Index terms = term_count(polynomial);
     Eigen::CompleteOrthogonalDecomposition<MatrixXd> fit(height_map_polynomial_matrix(unit.points, terms));
     fit.setThreshold(kRankThreshold);
-    if (fit.rank() < terms)
-      throw InvalidInput(std::string(who) + ": the points are " +
-                         (polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic"));
+    if (fit.rank() < terms) throw InvalidInput(std::string(who) + ": the points are " + height_map_degeneracy(polynomial));
     polynomial_ = fit.solve(heights);
     scaled_sites_.resize(2, 0);
     return;
   }
   MatrixXd kernel = kernel_matrix(unit.points, thin_plate_kernel, who);
   kernel.diagonal().array() += smoothing;
-  const BorderedSystem system(std::move(kernel),
-                              height_map_polynomial_matrix(unit.points, terms), 1.0, terms,
-                              polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic", who);
+  const Index terms = term_count(polynomial);
+  const BorderedSystem system(std::move(kernel), height_map_polynomial_matrix(unit.points, terms), 1.0, terms,
+                              height_map_degeneracy(polynomial), who);
   const BorderedSystem::Solution s = system.solve(heights);
   scaled_sites_ = std::move(unit.points);
   gamma_ = s.gamma;
@@ -234,21 +246,28 @@ double HeightMapSpline::evaluate(double x, double y) const {
   return kernel_part + monomials(q).head(polynomial_.size()).dot(polynomial_);
 }
 
-Eigen::ArrayXd HeightMapSpline::evaluate(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y) const {
-  const Eigen::ArrayXd qx = (x - centre_.x()) / scale_, qy = (y - centre_.y()) / scale_;
-  Eigen::ArrayXd z = polynomial_[0] + polynomial_[1] * qx + polynomial_[2] * qy;
-  if (polynomial_.size() == 6) z += polynomial_[3] * qx.square() + polynomial_[4] * qx * qy + polynomial_[5] * qy.square();
-  const Eigen::ArrayXd half_gamma = 0.5 * gamma_.array();
-  for (Index i = 0; i < x.size(); ++i) {
-    double kernel_part = 0;
-    for (Index j = 0; j < scaled_sites_.cols(); ++j) {
-      const double dx = qx[i] - scaled_sites_(0, j), dy = qy[i] - scaled_sites_(1, j);
-      const double squared = dx * dx + dy * dy;
-      if (squared > 0) kernel_part += half_gamma[j] * squared * std::log(squared);
-    }
-    z[i] += kernel_part;
-  }
-  return z;
+DuchonSpline::DuchonSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
+                           HeightMapPolynomial polynomial) {
+  constexpr const char* who = "DuchonSpline";
+  const UnitCentres<2> unit = height_map_sites(sites, heights, polynomial, who);
+  const detail::BorderedSolution s =
+      detail::solve_bordered(kernel_matrix(unit.points, duchon_kernel, who),
+                             height_map_polynomial_matrix(unit.points, term_count(polynomial)), heights, kRankThreshold,
+                             height_map_degeneracy(polynomial), who);
+  centre_ = unit.centre;
+  scale_ = unit.scale;
+  site_x_ = unit.points.row(0).transpose().array();
+  site_y_ = unit.points.row(1).transpose().array();
+  gamma_ = s.gamma.array();
+  polynomial_ = s.polynomial;
+}
+
+// The kernel part is vectorised over the sites (Eigen packets); the squared distances are an
+// expression, evaluated packet by packet, so nothing is allocated.
+double DuchonSpline::evaluate(double x, double y) const {
+  const Eigen::Vector2d q = (Eigen::Vector2d(x, y) - centre_) / scale_;
+  const auto squared = (site_x_ - q.x()).square() + (site_y_ - q.y()).square();
+  return (gamma_ * squared * squared.sqrt().sqrt()).sum() + monomials(q).head(polynomial_.size()).dot(polynomial_);
 }
 
 }  // namespace meshprep

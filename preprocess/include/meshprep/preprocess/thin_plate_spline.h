@@ -97,9 +97,6 @@ class HeightMapSpline {
                   HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0);
 
   double evaluate(double x, double y) const;
-  /// z at the points (x[i], y[i]): the fast path for many points (no per-call set-up). Equal to
-  /// evaluate() up to round-off.
-  Eigen::ArrayXd evaluate(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y) const;
   /// 8 pi gamma^T A gamma >= 0. With the linear polynomial this is the thin-plate energy
   /// J(z) = integral of z_xx^2 + 2 z_xy^2 + z_yy^2 over R^2; with the quadratic one it is that of
   /// the kernel part, the bending a quadric does not explain. Dimensionless (invariant when x, y
@@ -113,6 +110,32 @@ class HeightMapSpline {
   Eigen::VectorXd gamma_;
   Eigen::VectorXd polynomial_;  // coefficients of 1, x, y[, x^2, xy, y^2] in the scaled coordinates
   double bending_energy_ = 0;
+};
+
+/// Duchon's spline of a height map (Duchon 1977, order m = 2, s = 1/4): z(x, y) =
+/// sum_j gamma_j phi(|(x, y) - S_j|) + p(x, y) with phi(r) = r^(5/2) and p a linear or quadratic
+/// polynomial, interpolating heights z_j at sites S_j. Among all interpolants it minimises
+/// integral |xi|^(1/2) |F(D^2 z)(xi)|^2 dxi, the thin plate's J (s = 0, phi = r^2 log r) with the
+/// high frequencies weighted up a little: a slightly smoother surface, between the thin plate and
+/// phi = r^3 (s = 1/2). Like r^2 log r, r^(5/2) is conditionally positive definite of order 2, so
+/// the system is eq. (2)'s, solved as HeightMapSpline's, and planes (quadrics, with the quadratic
+/// polynomial) are reproduced exactly. It needs no logarithm: phi = t sqrt(sqrt(t)) with t = r^2,
+/// two SIMD square roots. The partition of unity's local approximant: on the Jacksboro DEM it
+/// predicts held-out points better than the thin plate (docs/reconstruction.md).
+class DuchonSpline {
+ public:
+  /// \throws InvalidInput as HeightMapSpline (without smoothing).
+  DuchonSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
+               HeightMapPolynomial polynomial = HeightMapPolynomial::linear);
+
+  double evaluate(double x, double y) const;
+
+ private:
+
+  Eigen::Vector2d centre_;
+  double scale_ = 1;
+  Eigen::ArrayXd site_x_, site_y_, gamma_;  // the sites in the scaled coordinates, one array per axis
+  Eigen::VectorXd polynomial_;              // coefficients of 1, x, y[, x^2, xy, y^2], scaled coordinates
 };
 
 }  // namespace meshprep
