@@ -87,8 +87,8 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
   EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
   EXPECT_TRUE(r.from_points);
   EXPECT_EQ(r.input_points, 1500u);
-  // The automatic ratio for a terrain keeps a tenth of the faces.
-  EXPECT_NEAR(static_cast<double>(r.stages[1].faces_after), 0.1 * static_cast<double>(r.stages[1].faces_before),
+  // The automatic ratio for a terrain keeps 7 % of the faces.
+  EXPECT_NEAR(static_cast<double>(r.stages[1].faces_after), 0.07 * static_cast<double>(r.stages[1].faces_before),
               0.02 * static_cast<double>(r.stages[1].faces_before));
   EXPECT_EQ(r.final_quality.boundary_loops, 1u);
   ASSERT_TRUE(r.fem.ready) << r.fem.problems.front();

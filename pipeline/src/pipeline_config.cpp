@@ -142,7 +142,7 @@ std::vector<Key> simplify_keys(PipelineConfig::Simplify& s) {
   std::vector<Key> keys;
   keys.push_back(flag("simplify", "enabled", s.enabled, "run the bending-energy edge collapse"));
   keys.push_back({"simplify", "ratio", "null or a number in (0, 1]",
-                  "fraction of the faces kept; null = 0.1 for a reconstructed terrain, no simplification for a mesh",
+                  "fraction of the faces kept; null = 0.07 for a reconstructed terrain, no simplification for a mesh",
                   [&s](const Json& v) {
                     if (v.is_null()) {
                       s.ratio.reset();

@@ -40,7 +40,7 @@ struct PipelineConfig {
   } reconstruct;
   struct Simplify {
     bool enabled = true;
-    /// Fraction of the faces kept. Empty = automatic: 0.1 for a reconstructed terrain (its grid
+    /// Fraction of the faces kept. Empty = automatic: 0.07 for a reconstructed terrain (its grid
     /// oversamples the points), no simplification for an input mesh (its detail is the user's).
     std::optional<double> ratio;
     std::size_t target_faces = 0;  ///< > 0 overrides ratio
