@@ -19,6 +19,9 @@ function(meshprep_add_module name)
   target_include_directories(meshprep_${name} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
   meshprep_set_warnings(meshprep_${name})
+  if(MESHPREP_SANITIZE)  # instrumented static libraries need the sanitizer runtimes wherever they are linked
+    target_link_options(meshprep_${name} INTERFACE -fsanitize=address,undefined)
+  endif()
   set_property(GLOBAL APPEND PROPERTY MESHPREP_MODULES meshprep_${name})
 endfunction()
 
