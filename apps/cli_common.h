@@ -13,7 +13,7 @@
 namespace meshprep::cli {
 
 /// Exit codes of the CLI contract.
-enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2 };
+enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2, kInterrupted = 130 };
 
 /// The work could not be done (exit 1), with the reason.
 class WorkFailed : public std::runtime_error {

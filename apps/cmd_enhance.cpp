@@ -1,6 +1,7 @@
 // meshprep enhance IN -o OUT [--reference ORIGINAL] [--iterations K] [--max-deviation E]
 //   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--json FILE|-]
 #include "cli_common.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
@@ -45,7 +46,7 @@ int run_enhance(EnhanceOptions o) {
     if (reference->triangles.empty()) throw InvalidInput(o.reference + ": the reference has no faces");
   }
   ProgressBar bar("enhance");
-  o.params.progress = [&bar](double fraction) { bar.update(fraction); };
+  o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const EnhanceResult result = enhance(loaded.mesh, reference.get(), o.params);
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);

@@ -2,6 +2,7 @@
 //   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2] [--threads N]
 //   [--quiet] [--json FILE|-] [--print-config]
 #include "cli_common.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
@@ -26,6 +27,7 @@ struct PipelineOptions {
   std::string input, outdir, config, json, format, msh_version;
   double ratio = 0, extrude_base = 0;
   std::size_t target_faces = 0, threads = 0;
+  unsigned timeout = 0;
   bool quiet = false, print_config = false, config_keys = false;
 };
 
@@ -91,6 +93,7 @@ int run_pipeline_command(const PipelineOptions& o) {
   std::ostream& log = o.json == "-" ? std::cerr : std::cout;
   std::unique_ptr<ProgressBar> bar;
   PipelineObserver observer;
+  observer.cancelled = stop_requested;
   if (!o.quiet) {
     observer.stage_started = [&bar](const std::string& stage) {
       bar = std::make_unique<ProgressBar>(stage);
@@ -104,7 +107,15 @@ int run_pipeline_command(const PipelineOptions& o) {
       log << stage_line(s) << std::endl;
     };
   }
-  const PipelineResult result = run_pipeline(o.input, config, observer);
+  arm_timeout(o.timeout);
+  PipelineResult result;
+  try {
+    result = run_pipeline(o.input, config, observer);
+  } catch (const Cancelled&) {
+    throw Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : "interrupted") +
+                    "; nothing written");
+  }
+  arm_timeout(0);  // the outputs are written whole, whatever the clock says
   bar.reset();
 
   nlohmann::ordered_json run;
@@ -153,6 +164,9 @@ Action add_pipeline_command(CLI::App& app) {
       ->check(CLI::IsMember({"4.1", "2.2"}));
   cmd->add_option("--threads", o->threads, "Threads for the parallel parts (default: all cores)")
       ->check(CLI::Range(std::size_t(1), std::size_t(1024)));
+  cmd->add_option("--timeout", o->timeout,
+                  "Stop after this many seconds (exit 1, nothing written); Ctrl-C stops at the next safe point (exit 130)")
+      ->check(CLI::Range(1u, 1000000u));
   cmd->add_flag("--quiet", o->quiet, "No progress bars and no stage summaries");
   cmd->add_option("--json", o->json, "Write the run's summary (report.json) to FILE ('-' = stdout)");
   cmd->add_flag("--print-config", o->print_config,

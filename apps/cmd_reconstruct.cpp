@@ -2,6 +2,7 @@
 //   [--leaf-size K] [--neighbors N] [--variation-threshold T|pNN] [--variation-growth G]
 //   [--adaptive] [--max-gap G] [--json FILE|-]
 #include "cli_common.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
@@ -48,7 +49,7 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.fit.variation_growth = o.variation_growth;
   apply_variation_rule(o.variation_threshold, params.fit);  // checked by CLI11
   ProgressBar bar("reconstruct");
-  params.progress = [&bar](double fraction) { bar.update(fraction); };
+  params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const auto start = std::chrono::steady_clock::now();
   ReconstructResult result;
   try {

@@ -1,6 +1,7 @@
 // meshprep simplify IN -o OUT (--ratio R | --faces N) [--cost bending|distance|quadric]
 //   [--max-error E] [--min-angle DEG] [--no-polish] [--enhance] [--json FILE|-]
 #include "cli_common.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
@@ -54,7 +55,7 @@ int run_simplify(const SimplifyOptions& o) {
   params.polish = !o.no_polish;
   params.enhance = o.enhance;
   ProgressBar bar("simplify");
-  params.progress = [&bar](double fraction) { bar.update(fraction); };
+  params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const SimplifyResult result = simplify(loaded.mesh, params);
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);

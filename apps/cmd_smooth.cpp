@@ -1,6 +1,7 @@
 // meshprep smooth IN -o OUT [--method rbf|taubin|laplace] [--neighbors 11] [--iterations N]
 //   [--smoothing L] [--feature-angle DEG] [--preserve-volume] [--json FILE|-]
 #include "cli_common.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
@@ -34,7 +35,7 @@ int run_smooth(SmoothOptions o) {
   require_manifold(loaded, o.input, "smoothing");
   o.params.method = kMethods.at(o.method);
   ProgressBar bar("smooth");
-  o.params.progress = [&bar](double fraction) { bar.update(fraction); };
+  o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const SmoothResult result = smooth(loaded.mesh, o.params);
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);

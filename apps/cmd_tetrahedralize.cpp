@@ -3,6 +3,7 @@
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
 //   [--fem-check] [--json FILE|-]
 #include "cli_common.h"
+#include "interrupt.h"
 
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
@@ -29,6 +30,7 @@ struct TetOptions {
   TetParams params;
   double extrude_depth = 0, extrude_relative = 0;
   bool binary = false, fem_check = false;
+  unsigned timeout = 0;
 };
 
 void progress(const std::string& line) {
@@ -98,13 +100,24 @@ int run_tetrahedralize(const TetOptions& o) {
   progress("tetrahedralizing " + std::to_string(plc.facets.size()) + " facets with TetGen ...");
   const auto start = std::chrono::steady_clock::now();
   TetMesh tets;
+  TetParams params = o.params;
+  params.cancelled = stop_requested;
+  arm_timeout(o.timeout);
+  const auto stopped = [&o] {
+    return Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : "interrupted") +
+                     "; nothing written");
+  };
   try {
-    tets = tetrahedralize_plc(plc, o.params);
+    tets = tetrahedralize_plc(plc, params);
+  } catch (const Cancelled&) {
+    throw stopped();
   } catch (const TetgenError& e) {
     json["tetgen_error"] = {{"code", e.code()}, {"message", e.what()}};
     if (!o.json.empty()) emit_json(json, o.json);
     throw WorkFailed(o.input + ": " + e.what());
   }
+  if (stop_requested()) throw stopped();  // TetGen had just finished
+  arm_timeout(0);  // from here on the outputs are written whole
   json["tetgen_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const TetQualityReport quality = analyze_tet_quality(tets);
   json["tet_quality"] = to_json(quality);
@@ -162,6 +175,9 @@ Action add_tetrahedralize_command(CLI::App& app) {
       ->check(CLI::Range(1e-9, 100.0))
       ->excludes(depth);
   cmd->add_flag("--fem-check", o->fem_check, "Solve a P1 Poisson problem with a known solution on the tets and report errors");
+  cmd->add_option("--timeout", o->timeout,
+                  "Stop TetGen after this many seconds (exit 1, nothing written); Ctrl-C stops it too (exit 130)")
+      ->check(CLI::Range(1u, 1000000u));
   cmd->add_option("--json", o->json, "Write the results as JSON to FILE ('-' = stdout)");
   return [o] { return run_tetrahedralize(*o); };
 }

@@ -1,5 +1,6 @@
 // meshprep: FEM-ready surface and tetrahedral meshes with a clear report, in one command.
 #include "cli_common.h"
+#include "interrupt.h"
 
 #include "meshprep/core/errors.h"
 
@@ -46,10 +47,17 @@ int main(int argc, char** argv) {
     std::cout << app.help();
     return cli::kSuccess;
   }
+  cli::install_interrupt_handlers();
   try {
     for (const auto& [command, action] : actions)
       if (command->parsed()) return action();
     return cli::kBadInput;
+  } catch (const Cancelled& e) {
+    // Ctrl-C: 128 + SIGINT, as a shell reports a process it interrupted; a timeout: the work
+    // could not be done in time.
+    const bool timeout = cli::timed_out();
+    std::cerr << "meshprep: " << (timeout ? "failed: " : "") << e.what() << '\n';
+    return timeout ? cli::kWorkFailed : cli::kInterrupted;
   } catch (const InvalidInput& e) {
     std::cerr << "meshprep: error: " << e.what() << '\n';
     return cli::kBadInput;

@@ -135,5 +135,29 @@ echo '{"tetrahedralize": {"enabled": false}}' > surface_only.json
 expect_exit "surface only" 0 $?
 [ -s out_holed/surface.ply ] && [ ! -e out_holed/tets.msh ] && ok || bad "surface only: $(ls out_holed)"
 
+# ---- stopping: Ctrl-C (exit 130) and --timeout (exit 1), nothing written, TetGen's child gone --
+no_leftovers() {  # NAME DIR: the folder is empty and no temporary file is left anywhere here
+  [ -z "$(ls -A "$2" 2>/dev/null)" ] && [ -z "$(find . -name '.*.tmp-*' -o -name '.meshprep-staging-*')" ] && ok ||
+    bad "$1: files left: $(ls -A "$2") $(find . -name '.*.tmp-*' -o -name '.meshprep-staging-*')"
+}
+"$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o stopped --quiet 2> err.txt &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid
+expect_exit "Ctrl-C" 130 $?
+one_line "Ctrl-C" "jacksboro_10k.xyz: interrupted; nothing written"
+no_leftovers "Ctrl-C" stopped
+"$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o timed_out --timeout 1 --quiet 2> err.txt
+expect_exit "pipeline --timeout" 1 $?
+one_line "pipeline --timeout" "jacksboro_10k.xyz: timed out after 1 s; nothing written"
+no_leftovers "pipeline --timeout" timed_out
+# TetGen on 10^6 tets takes far longer than a second: the timeout kills it.
+"$bin" tetrahedralize "$src/examples/data/fandisk.off" -o slow.msh --max-volume-relative 1e-6 --timeout 1 2> err.txt
+expect_exit "tetrahedralize --timeout" 1 $?
+one_line "tetrahedralize --timeout" "fandisk.off: timed out after 1 s; nothing written"
+[ ! -e slow.msh ] && ok || bad "tetrahedralize --timeout wrote slow.msh"
+pgrep -f "tetrahedralize $src/examples/data/fandisk.off" > /dev/null && bad "TetGen's child outlived the timeout" || ok
+
 echo "cli_pipeline: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -15,8 +15,10 @@ struct IsolatedResult {
 };
 
 /// Runs `work` in a child process and returns what it produced. The child must not touch shared
-/// state it expects the parent to see; its stdout/stderr are the parent's.
-/// \throws IoError if the process cannot be created.
-IsolatedResult call_isolated(const std::function<std::string()>& work);
+/// state it expects the parent to see; its stdout/stderr are the parent's. While it runs,
+/// `cancelled` (if given) is asked every 50 ms; when it says yes the child is killed.
+/// \throws IoError if the process cannot be created; Cancelled if it was stopped.
+IsolatedResult call_isolated(const std::function<std::string()>& work,
+                             const std::function<bool()>& cancelled = {});
 
 }  // namespace meshprep::detail

@@ -203,7 +203,8 @@ TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params) {
     for (std::size_t k = 1; k + 1 < facet.size(); ++k)
       six_volume += plc.points[facet[0]].dot(plc.points[facet[k]].cross(plc.points[facet[k + 1]]));
   const std::string switches = tetgen_switches(params, std::abs(six_volume) / 6.0);
-  const detail::IsolatedResult run = detail::call_isolated([&] { return run_tetgen(plc, switches); });
+  const detail::IsolatedResult run =
+      detail::call_isolated([&] { return run_tetgen(plc, switches); }, params.cancelled);
   if (run.crashed || run.output.empty()) {
     const std::string how = run.signal ? "signal " + std::to_string(run.signal) + ": " + strsignal(run.signal)
                                        : "exit status " + std::to_string(run.exit_status);

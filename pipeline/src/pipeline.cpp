@@ -65,8 +65,13 @@ class Run {
     result_.stages.push_back(std::move(record));
   }
 
+  void stop_if_cancelled() const {
+    if (observer_.cancelled && observer_.cancelled()) throw Cancelled(result_.input + ": stopped");
+  }
+
   // A stage begins: the front end is told, and its record is opened on the current mesh.
   StageRecord started(const std::string& name) {
+    stop_if_cancelled();
     if (observer_.stage_started) observer_.stage_started(name);
     StageRecord record;
     record.name = name;
@@ -83,7 +88,13 @@ class Run {
     finish(std::move(record));
   }
 
-  std::function<void(double)> progress() const { return observer_.progress; }
+  // The stages' progress callback: the front end's, and the safe point where a run stops.
+  std::function<void(double)> progress() const {
+    return [this](double fraction) {
+      if (observer_.progress) observer_.progress(fraction);
+      stop_if_cancelled();
+    };
+  }
 
   // The figures of the table row, from a report of the stage's output against the input surface.
   static void fill_shape(StageRecord& record, const QualityReport& report) {
@@ -296,8 +307,10 @@ class Run {
     fill_shape(record, result_.final_quality);
     const Clock::time_point start = Clock::now();
     if (std::optional<SurfacePlc> plc = prepare_plc(record)) {
+      TetParams params = config_.tetrahedralize.params;
+      params.cancelled = observer_.cancelled;
       try {
-        result_.tets = tetrahedralize_plc(*plc, config_.tetrahedralize.params);
+        result_.tets = tetrahedralize_plc(*plc, params);
       } catch (const TetgenError& e) {
         result_.fem.problems.push_back(std::string("TetGen: ") + e.what());
       }

@@ -33,4 +33,11 @@ class SolverError : public Error {
   using Error::Error;
 };
 
+/// The caller asked the work to stop (a cancellation callback said so, or a progress callback
+/// threw it): nothing is half-done on the caller's side.
+class Cancelled : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace meshprep

@@ -7,6 +7,7 @@
 #include "meshprep/core/mesh.h"
 #include "meshprep/fem/tet_mesh.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,8 @@ struct TetParams {
   double max_volume = 0;        ///< TetGen -a: largest tet volume, absolute (0 = no bound)
   double max_volume_relative = 0;  ///< same, as a fraction of the enclosed volume (0 = no bound)
   bool keep_surface = false;    ///< TetGen -Y: the boundary keeps exactly the input triangles
+  /// Asked every 50 ms while TetGen runs; true stops it (tetrahedralize_plc throws Cancelled).
+  std::function<bool()> cancelled;
 };
 
 /// A piecewise-linear complex for TetGen: planar polygonal facets with boundary tags.
@@ -40,7 +43,7 @@ class TetgenError : public Error {
 };
 
 /// Tetrahedralise a PLC (no readiness check: the caller vouches for it).
-/// \throws TetgenError.
+/// \throws TetgenError; Cancelled when params.cancelled said so.
 TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params);
 
 /// The TetGen switches for `params` ("pzQ" + q, a, Y), given the enclosed volume.

@@ -71,14 +71,17 @@ struct PipelineObserver {
   std::function<void(const std::string& stage)> stage_started;
   std::function<void(double fraction)> progress;  ///< within the current stage, in [0, 1]
   std::function<void(const StageRecord&)> stage_finished;
+  /// Asked at every stage's start, at every progress report and every 50 ms while TetGen runs;
+  /// true stops the run at that point (run_pipeline throws Cancelled).
+  std::function<bool()> cancelled;
 };
 
 /// Run the pipeline on the file `input` (.xyz points, or a surface mesh).
 /// \throws InvalidInput for an unreadable, malformed or non-manifold input (the message names the
 ///         file); IoError if unreadable; PipelineFailed when the work cannot be done (the input
 ///         cannot be made FEM-ready as configured, e.g. an open surface without extrude_base; a
-///         stage made the surface cross itself). A surface TetGen rejects is not an exception:
-///         the result says why in `fem`.
+///         stage made the surface cross itself); Cancelled when the observer said so. A surface
+///         TetGen rejects is not an exception: the result says why in `fem`.
 PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config,
                             const PipelineObserver& observer = {});
 
