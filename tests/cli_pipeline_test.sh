@@ -65,6 +65,12 @@ expect_exit "replay" 0 $?
 [ ! -s stdout.txt ] && ok || bad "--quiet printed"
 cmp -s fandisk/surface.ply replay/surface.ply && ok || bad "the replay's surface differs"
 cmp -s fandisk/tets.msh replay/tets.msh && ok || bad "the replay's tets differ"
+# One thread or all: the same bytes.
+"$bin" pipeline "$src/examples/data/fandisk.off" -o one_thread --ratio 0.3 --threads 1 --quiet 2> err.txt
+expect_exit "--threads 1" 0 $?
+for f in surface.ply tets.msh report.vtu; do
+  cmp -s fandisk/$f one_thread/$f && ok || bad "--threads 1 changes $f"
+done
 "$bin" pipeline --config fandisk/pipeline.json --print-config > printed.json 2> err.txt
 expect_exit "print-config" 0 $?
 python3 -c "
