@@ -196,17 +196,21 @@ done
 strays=$(find . \( -name '.*.tmp-*' -o -name '.meshprep-staging-*' \) | head -3)
 [ -z "$strays" ] && ok || bad "temporary files left: $strays"
 
-# same_figures LABEL TOLERANCE A.json B.json: every number of A is in B at the same place, equal
-# to TOLERANCE (relative, absolute below 1); paths, times and bounding boxes are not compared.
+# same_figures LABEL TOLERANCE A.json B.json [SKIPPED]: every number of A is in B at the same place,
+# equal to TOLERANCE (relative, absolute below 1); paths, times, bounding boxes, the worst faces'
+# indices and the keys or named stages in the comma-separated list SKIPPED are not compared.
 same_figures() {
   python3 - "$@" <<'PY' && ok || bad "$1: the figures differ"
 import json, sys
 label, tolerance = sys.argv[1], float(sys.argv[2])
 a, b = (json.load(open(path)) for path in sys.argv[3:5])
-skipped = {"bbox_min", "bbox_max", "file", "input", "output", "path", "time_seconds", "seconds", "tetgen_seconds"}
+skipped = {"bbox_min", "bbox_max", "file", "input", "output", "path", "time_seconds", "seconds", "tetgen_seconds",
+           "worst_faces", *(sys.argv[5].split(",") if len(sys.argv) > 5 else [])}
 
 def differences(x, y, where):
     if isinstance(x, dict) and isinstance(y, dict):
+        if x.get("name") in skipped:
+            return
         for key in x:
             if key not in skipped:
                 yield from differences(x[key], y.get(key), where + "." + key)
@@ -229,6 +233,20 @@ PY
 # The sphere at 1e9 is an exact translate of the control sphere (broken_meshes.py): its figures
 # are the same, bit for bit where they come from differences of its coordinates.
 same_figures quality 1e-12 runs/sphere.off.quality/report.json runs/offset_1e9.off.quality/report.json
+# The stages run on the same numbers: their own figures are the same. What they write at 1e9 is
+# rounded to the spacing of doubles there (1.2e-7), which the quality of their output shows (a
+# volume change in percent, 1e-5); enhance leaves this good sphere as it is, its report is exact.
+# The pipeline's TetGen refines a surface that rounding has already moved: its tets differ.
+for stage in simplify smooth tetrahedralize; do
+  same_figures $stage 1e-12 runs/sphere.off.$stage/result.json runs/offset_1e9.off.$stage/result.json quality,tet_quality
+  same_figures "$stage output" 1e-5 runs/sphere.off.$stage/result.json runs/offset_1e9.off.$stage/result.json
+done
+same_figures enhance 1e-12 runs/sphere.off.enhance/result.json runs/offset_1e9.off.enhance/result.json
+same_figures reconstruct 1e-9 runs/points.xyz.reconstruct/result.json runs/points_offset_1e9.xyz.reconstruct/result.json
+same_figures pipeline 1e-5 runs/sphere.off.pipeline/out/report.json runs/offset_1e9.off.pipeline/out/report.json \
+  tetrahedralize,tets
+same_figures "pipeline of points" 1e-5 runs/points.xyz.pipeline/out/report.json \
+  runs/points_offset_1e9.xyz.pipeline/out/report.json tetrahedralize,tets
 
 # A one-face mesh is measured, not refused.
 python3 -c "
