@@ -247,6 +247,12 @@ same_figures pipeline 1e-5 runs/sphere.off.pipeline/out/report.json runs/offset_
   tetrahedralize,tets
 same_figures "pipeline of points" 1e-5 runs/points.xyz.pipeline/out/report.json \
   runs/points_offset_1e9.xyz.pipeline/out/report.json tetrahedralize,tets
+# A size bound relative to the enclosed volume holds at 1e9 too.
+for f in sphere offset_1e9; do
+  "$bin" tetrahedralize corpus/$f.off -o $f-fine.msh --max-volume-relative 0.001 --json $f-fine.json > /dev/null 2> err.txt ||
+    bad "$f: tetrahedralize --max-volume-relative"
+done
+same_figures "tetrahedralize --max-volume-relative" 1e-5 sphere-fine.json offset_1e9-fine.json
 
 # A one-face mesh is measured, not refused.
 python3 -c "

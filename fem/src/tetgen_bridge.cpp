@@ -4,6 +4,8 @@
 // (isolated_call.h) so that anything worse than a throw is reported too.
 #include "meshprep/fem/tetrahedralize.h"
 
+#include "meshprep/core/origin_shift.h"
+
 #include "isolated_call.h"
 
 #include <tetgen.h>
@@ -197,7 +199,16 @@ SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
   return plc;
 }
 
-TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params) {
+TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
+  // TetGen's Steiner points, tolerances and our enclosed volume (the cones below) are computed in
+  // absolute coordinates: far from the origin TetGen gets the surface moved next to it.
+  const Vec3 shift = origin_shift(surface.points);
+  SurfacePlc moved;
+  if (!shift.isZero()) {
+    moved = surface;
+    for (Vec3& p : moved.points) p -= shift;
+  }
+  const SurfacePlc& plc = shift.isZero() ? surface : moved;
   double six_volume = 0;  // enclosed volume for a relative size bound (facets fanned from their first corner)
   for (const auto& facet : plc.facets)
     for (std::size_t k = 1; k + 1 < facet.size(); ++k)
@@ -221,6 +232,7 @@ TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params) {
       break;
   }
   TetMesh mesh = deserialise(in);
+  for (Vec3& p : mesh.points) p += shift;
   if (mesh.tets.empty())
     throw TetgenError(0, "TetGen produced no tetrahedra: the surface does not enclose a volume (holes let the "
                          "exterior removal leak in)");
