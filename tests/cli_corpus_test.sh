@@ -81,6 +81,7 @@ touching*               pipeline                           1  intersects itself
 touching*               *                                  0
 offset_1e9-binary.stl   simplify,smooth,enhance,pipeline   2  make an edge or vertex non-manifold
 offset_1e9-binary.stl   tetrahedralize                     1  not FEM-ready
+offset_1e9.obj          convert                            2  binary STL stores float32 coordinates
 offset_1e9*             *                                  0
 one_face*               tetrahedralize                     1  not FEM-ready \(closed\)
 one_face*               *                                  0

@@ -71,7 +71,8 @@ void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions
 
 /// Write a soup (format from the extension), atomically. Nothing is written when the input is
 /// invalid.
-/// \throws InvalidInput for an unknown extension, a non-finite point or an index out of range, and
+/// \throws InvalidInput for an unknown extension, a non-finite point or an index out of range, a
+/// binary STL whose float32 coordinates would make two corners of a triangle one, and
 /// for a vertex scalar with an empty, duplicate, non-printable or x/y/z name, a value count other
 /// than soup.points.size() or a non-finite value; IoError if the file cannot be written.
 void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOptions& options = {});
