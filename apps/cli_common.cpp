@@ -33,6 +33,12 @@ void require_manifold(const LoadedMesh& loaded, const std::string& path, const s
                      " needs a manifold surface (see meshprep quality for the list)");
 }
 
+void add_samples_option(CLI::App& cmd, std::size_t& samples) {
+  cmd.add_option("--samples", samples, "Random samples per direction for the reference distances of the report")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
+}
+
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice) {
   if (output.self_intersections <= input_intersections) return;

@@ -36,6 +36,10 @@ void require_manifold(const LoadedMesh& loaded, const std::string& path, const s
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
 
+/// Registers --samples on `cmd`: the random samples per direction behind the distances of the
+/// report (QualityParams::distance_samples), bound to `samples`.
+void add_samples_option(CLI::App& cmd, std::size_t& samples);
+
 /// A subcommand: registers its options on `app` and returns the action to run once parsed.
 using Action = std::function<int()>;
 

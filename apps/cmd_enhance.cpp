@@ -18,6 +18,7 @@ namespace {
 struct EnhanceOptions {
   std::string input, output, reference, json;
   EnhanceParams params;
+  std::size_t samples = QualityParams().distance_samples;
 };
 
 nlohmann::ordered_json tail_json(const QualityTail& tail) {
@@ -51,7 +52,9 @@ int run_enhance(EnhanceOptions o) {
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 
   const TriangleSoup& against = reference ? *reference : loaded.soup;
-  QualityReport quality = analyze_quality(output, QualityParams(), &against);
+  QualityParams quality_params;
+  quality_params.distance_samples = o.samples;
+  QualityReport quality = analyze_quality(output, quality_params, &against);
   quality.path = o.output;
   quality.reference->path = reference ? o.reference : o.input;
   refuse_new_intersections(quality, result.input_self_intersections, o.input, "enhanced",
@@ -122,6 +125,7 @@ Action add_enhance_command(CLI::App& app) {
       ->check(CLI::Range(1.0, 180.0))
       ->capture_default_str();
   cmd->add_flag("--flips,!--no-flips", o->params.flips, "Flip edges where moving vertices cannot help (default on)");
+  add_samples_option(*cmd, o->samples);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");
   return [o] { return run_enhance(*o); };
 }

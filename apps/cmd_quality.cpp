@@ -16,7 +16,7 @@ namespace {
 struct QualityOptions {
   std::string input, reference, json, csv, vtk, html, fail_on;
   std::size_t worst = 10;
-  std::size_t samples = 1000000;
+  std::size_t samples = QualityParams().distance_samples;
 };
 
 // Faces a halfedge mesh cannot hold (non-manifold edge or vertex): later stages would drop them,
@@ -94,9 +94,7 @@ Action add_quality_command(CLI::App& app) {
   cmd->add_option("--fail-on", o->fail_on,
                   "Quality gate: exit 1 if any condition holds, e.g. \"radius_ratio.p95>3,closed=false\"");
   cmd->add_option("--worst", o->worst, "How many worst faces to list")->capture_default_str();
-  cmd->add_option("--samples", o->samples, "Random samples per direction for reference distances")
-      ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
+  add_samples_option(*cmd, o->samples);
   return [o] { return run_quality(*o); };
 }
 

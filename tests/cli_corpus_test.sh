@@ -118,9 +118,9 @@ run_one() {
     quality) out=$dir/report.json; args=(quality "$input" --json "$out") ;;
     convert) out=$dir/$(converted_name "$name"); args=(convert "$input" "$out" --binary) ;;
     reconstruct) out=$dir/surface.off; args=(reconstruct "$input" -o "$out" --resolution 20 20 --json "$dir/result.json") ;;
-    simplify) out=$dir/surface.off; args=(simplify "$input" -o "$out" --ratio 0.5 --json "$dir/result.json") ;;
-    smooth) out=$dir/surface.off; args=(smooth "$input" -o "$out" --iterations 1 --json "$dir/result.json") ;;
-    enhance) out=$dir/surface.off; args=(enhance "$input" -o "$out" --iterations 2 --json "$dir/result.json") ;;
+    simplify) out=$dir/surface.off; args=(simplify "$input" -o "$out" --ratio 0.5 --samples 1000 --json "$dir/result.json") ;;
+    smooth) out=$dir/surface.off; args=(smooth "$input" -o "$out" --iterations 1 --samples 1000 --json "$dir/result.json") ;;
+    enhance) out=$dir/surface.off; args=(enhance "$input" -o "$out" --iterations 2 --samples 1000 --json "$dir/result.json") ;;
     tetrahedralize) out=$dir/tets.msh; args=(tetrahedralize "$input" -o "$out" --json "$dir/result.json") ;;
     pipeline) out=$dir/out; args=(pipeline "$input" -o "$out" --config quick.json --quiet) ;;
   esac
