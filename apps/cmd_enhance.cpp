@@ -39,7 +39,7 @@ int run_enhance(EnhanceOptions o) {
     ensure_not_input(o.json, o.reference);
   }
   LoadedMesh loaded = load_mesh(o.input);
-  require_manifold(loaded, o.input, "enhancement");
+  require_all_faces(loaded, "enhancement");
   std::unique_ptr<TriangleSoup> reference;
   if (!o.reference.empty()) {
     reference = std::make_unique<TriangleSoup>(read_soup(o.reference));

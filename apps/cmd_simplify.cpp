@@ -44,7 +44,7 @@ int run_simplify(const SimplifyOptions& o) {
   ensure_not_input(o.json, o.input);
   if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
-  require_manifold(loaded, o.input, "simplification");
+  require_all_faces(loaded, "simplification");
   SimplifyParams params;
   params.keep_ratio = o.ratio > 0 ? o.ratio : 1.0;
   params.target_faces = o.faces;

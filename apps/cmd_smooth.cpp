@@ -32,7 +32,7 @@ int run_smooth(SmoothOptions o) {
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   LoadedMesh loaded = load_mesh(o.input);
-  require_manifold(loaded, o.input, "smoothing");
+  require_all_faces(loaded, "smoothing");
   o.params.method = kMethods.at(o.method);
   ProgressBar bar("smooth");
   o.params.progress = [&bar](double fraction) { bar.update(fraction); };

@@ -54,32 +54,33 @@ sphere*                 *                                  0
 hole*                   tetrahedralize                     1  not FEM-ready
 hole*                   pipeline                           1  not FEM-ready: the surface is open
 hole*                   *                                  0
-flipped*                simplify,smooth,enhance,pipeline   2  face 5 make an edge or vertex non-manifold
+flipped*                simplify,smooth,enhance,pipeline   2  face 5 is oriented against face 2
 flipped*                tetrahedralize                     1  not FEM-ready \(oriented\)
 flipped*                *                                  0
-nonmanifold_*           simplify,smooth,enhance,pipeline   2  non-manifold
+nonmanifold_edge*       simplify,smooth,enhance,pipeline   2  face 12 makes the edge [0-9]+-[0-9]+ non-manifold \(3 faces
+nonmanifold_vertex*     simplify,smooth,enhance,pipeline   2  face 4 makes vertex 0 non-manifold \(2 fans
 nonmanifold_edge*       tetrahedralize                     1  not FEM-ready \(closed, manifold\)
 nonmanifold_vertex*     tetrahedralize                     1  not FEM-ready \(manifold\)
 nonmanifold_*           *                                  0
-duplicate_face*         simplify,smooth,enhance,pipeline   2  face 12 make an edge or vertex non-manifold
+duplicate_face*         simplify,smooth,enhance,pipeline   2  face 12 repeats face 3
 duplicate_face*         tetrahedralize                     1  not FEM-ready
 duplicate_face*         *                                  0
 zero_area*              tetrahedralize                     1  not FEM-ready \(degenerate_faces
 zero_area*              pipeline                           1  not FEM-ready
 zero_area*              *                                  0
-repeated_corner*        simplify,smooth,enhance,pipeline   2  face 12 make an edge or vertex non-manifold
+repeated_corner*        simplify,smooth,enhance,pipeline   2  face 12 has two corners at vertex 0
 repeated_corner*        tetrahedralize                     1  not FEM-ready \(manifold\)
 repeated_corner*        *                                  0
 isolated_vertices*      *                                  0
 self_intersecting*      tetrahedralize                     1  not FEM-ready \(self_intersections\)
 self_intersecting*      pipeline                           1  intersects itself at 18 face pairs
 self_intersecting*      *                                  0
-touching*.stl           simplify,smooth,enhance,pipeline   2  non-manifold
+touching*.stl           simplify,smooth,enhance,pipeline   2  face 12 makes the edge [0-9]+-[0-9]+ non-manifold \(4 faces
 touching*.stl           tetrahedralize                     1  not FEM-ready
 touching*               tetrahedralize                     1  not FEM-ready \(self_intersections\)
 touching*               pipeline                           1  intersects itself
 touching*               *                                  0
-offset_1e9-binary.stl   simplify,smooth,enhance,pipeline   2  make an edge or vertex non-manifold
+offset_1e9-binary.stl   simplify,smooth,enhance,pipeline   2  face 0 has two corners at vertex 0
 offset_1e9-binary.stl   tetrahedralize                     1  not FEM-ready
 offset_1e9.obj          convert                            2  binary STL stores float32 coordinates
 offset_1e9*             *                                  0
