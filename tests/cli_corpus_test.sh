@@ -39,12 +39,13 @@ EOF
 # "surface" stands for the commands that read surfaces only (all but reconstruct and pipeline). Runs without a row get the checks above only.
 cat > expectations.txt <<'EOF'
 *.xyz                   surface                            2  unknown mesh extension '\.xyz'
+empty*                  reconstruct                        2  a surface mesh \(\.(off|obj|ply|stl)\), not a point set
 empty*                  *                                  2  empty file
 points_empty.xyz        *                                  2  empty file
 points.xyz              *                                  0
 points_offset_1e9.xyz   *                                  0
 points_*.xyz            *                                  2  line [0-9]+: |at least 40
-*                       reconstruct                        2  is not a number
+*                       reconstruct                        2  a surface mesh \(\.(off|obj|ply|stl)\), not a point set
 truncated*              *                                  2  -
 nan*                    *                                  2  non-finite coordinate \(nan\)
 lying_count_more*.ply   *                                  2  face 0 has [01] corners

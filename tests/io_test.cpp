@@ -555,6 +555,8 @@ TEST_F(IoTest, XyzErrorsNameTheLine) {
   EXPECT_NE(message("word.xyz", "0 0 0\n1 a 0\n").find("line 2: 'a' is not a number"), std::string::npos);
   EXPECT_NE(message("none.xyz", "# only a comment\n").find("no points"), std::string::npos);
   EXPECT_NE(message("empty.xyz", "").find("empty"), std::string::npos);
+  EXPECT_NE(message("mesh.off", "OFF\n0 0 0\n").find("mesh.off: a surface mesh (.off), not a point set"),
+            std::string::npos);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -88,9 +88,9 @@ struct PointSet {
   std::vector<Vec3> normals;  ///< empty, or one per point
 };
 
-/// Read an XYZ point set.
-/// \throws InvalidInput on a malformed line (named by its number), NaN/Inf, a mix of 3- and
-/// 6-column lines, or no points; IoError if unreadable.
+/// Read an XYZ point set (any extension but those of the mesh formats, which are refused).
+/// \throws InvalidInput for a mesh extension, on a malformed line (named by its number), NaN/Inf, a
+/// mix of 3- and 6-column lines, or no points; IoError if unreadable.
 PointSet read_points(const std::string& path);
 
 /// Lower-case extension without the dot ("off" for "a/B.OFF"); empty if none.
