@@ -257,6 +257,21 @@ for f in sphere offset_1e9; do
 done
 same_figures "tetrahedralize --max-volume-relative" 1e-5 sphere-fine.json offset_1e9-fine.json
 
+# Isolated vertices are counted, not hidden; the stages carry them through, and they change no
+# tet: TetGen gets what the faces use, the cube's tets.
+python3 "$here/cli_meshes.py" cube
+"$bin" tetrahedralize cube.off -o cube.msh --json cube.json > /dev/null 2> err.txt || bad "the cube's tets"
+python3 - <<'PY' && ok || bad "isolated vertices"
+import json
+q = json.load(open("runs/isolated_vertices.off.quality/report.json"))
+assert q["vertices"] == 8 and q["isolated_vertices"] == 2, q
+for stage in "simplify", "smooth", "enhance":
+    lines = open(f"runs/isolated_vertices.off.{stage}/surface.off").read().split("\n")
+    assert "0.5 0.5 0.5" in lines and "3 3 3" in lines, stage
+t, cube = (json.load(open(f))["tet_quality"] for f in ("runs/isolated_vertices.off.tetrahedralize/result.json", "cube.json"))
+assert (t["points"], t["tetrahedra"]) == (cube["points"], cube["tetrahedra"]), (t, cube)
+PY
+
 # A one-face mesh is measured, not refused.
 python3 -c "
 import json; j = json.load(open('runs/one_face.off.quality/report.json'))

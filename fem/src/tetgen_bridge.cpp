@@ -192,9 +192,17 @@ std::string tetgen_switches(const TetParams& params, double enclosed_volume) {
 }
 
 SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
+  constexpr std::uint32_t unused = ~std::uint32_t(0);
+  std::vector<std::uint32_t> index(surface.points.size(), unused);
+  for (const Triangle& t : surface.triangles)
+    for (const std::uint32_t v : t) index[v] = 0;
   SurfacePlc plc;
-  plc.points = surface.points;
-  for (const Triangle& t : surface.triangles) plc.facets.push_back({t[0], t[1], t[2]});
+  for (std::size_t v = 0; v < surface.points.size(); ++v) {
+    if (index[v] == unused) continue;
+    index[v] = static_cast<std::uint32_t>(plc.points.size());
+    plc.points.push_back(surface.points[v]);
+  }
+  for (const Triangle& t : surface.triangles) plc.facets.push_back({index[t[0]], index[t[1]], index[t[2]]});
   plc.tags.assign(plc.facets.size(), tag);
   return plc;
 }
