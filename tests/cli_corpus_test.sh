@@ -46,9 +46,12 @@ points.xyz              *                                  0
 points_offset_1e9.xyz   *                                  0
 points_*.xyz            *                                  2  line [0-9]+: |at least 40
 *                       reconstruct                        2  a surface mesh \(\.(off|obj|ply|stl)\), not a point set
-truncated*              *                                  2  -
+truncated*.ply          *                                  2  truncated: header announces 8 vertices, data has [45]
+truncated*.stl          *                                  2  truncated
+truncated.off           *                                  2  line 12: face 1 announces 3 corners, found 2
+truncated.obj           *                                  2  line 20: face has 2 corners
 nan*                    *                                  2  non-finite coordinate \(nan\)
-lying_count_more*.ply   *                                  2  face 0 has [01] corners
+lying_count_more*.ply   *                                  2  face 0 has [01] corners .*is the header's vertex count, 9, right
 lying_count_fewer*.ply  *                                  2  unexpected data after the last element
 lying_count_more.off    *                                  2  truncated: header announces 13 faces, found 12
 sphere*                 *                                  0
