@@ -163,11 +163,13 @@ def damaged_files():
         files["truncated" + suffix] = truncated(suffix, write(CUBE_POINTS, CUBE_TRIANGLES))
         files["nan" + suffix] = write(nan_points, CUBE_TRIANGLES)
     # Element counts that do not match the data: one more vertex than there is (the first face
-    # line is then read as a vertex), one face fewer than there is (data left over).
+    # line is then read as a vertex), one face fewer than there is (data left over), three
+    # billion vertices (memory must not be reserved for them).
     n_v, n_f = len(CUBE_POINTS), len(CUBE_TRIANGLES)
     for kind, binary in (("ascii", False), ("binary", True)):
         files[f"lying_count_more-{kind}.ply"] = ply_bytes(CUBE_POINTS, CUBE_TRIANGLES, binary, (n_v + 1, n_f))
         files[f"lying_count_fewer-{kind}.ply"] = ply_bytes(CUBE_POINTS, CUBE_TRIANGLES, binary, (n_v, n_f - 1))
+    files["lying_count_huge-binary.ply"] = ply_bytes(CUBE_POINTS, CUBE_TRIANGLES, True, (3 * 10**9, n_f))
     files["lying_count_more.off"] = off_bytes(CUBE_POINTS, CUBE_TRIANGLES, (n_v, n_f + 1))
     return files
 

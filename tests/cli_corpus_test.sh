@@ -53,6 +53,7 @@ truncated.obj           *                                  2  line 20: face has 
 nan*                    *                                  2  non-finite coordinate \(nan\)
 lying_count_more*.ply   *                                  2  face 0 has [01] corners .*is the header's vertex count, 9, right
 lying_count_fewer*.ply  *                                  2  unexpected data after the last element
+lying_count_huge*.ply   *                                  2  truncated: header announces 3000000000 vertices, data has 14
 lying_count_more.off    *                                  2  truncated: header announces 13 faces, found 12
 sphere*                 *                                  0
 hole*                   tetrahedralize                     1  not FEM-ready
