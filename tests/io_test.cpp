@@ -599,7 +599,8 @@ TEST_F(IoTest, DroppedFacesAreExplained) {
   EXPECT_EQ(first_problem(repeated), "face 4 has two corners at vertex 1");
   EXPECT_EQ(first_problem(duplicate), "face 4 repeats face 1");
   EXPECT_EQ(first_problem(flipped), "face 3 is oriented against face 0 (both run from vertex 2 to 1)");
-  EXPECT_EQ(first_problem(bowtie), "face 4 makes vertex 0 non-manifold (2 fans of faces meet there) (2 more faces cannot be added either)");
+  EXPECT_EQ(first_problem(bowtie),
+            "face 4 makes vertex 0 non-manifold (2 fans of faces meet there) (2 more faces cannot be added either)");
   TriangleSoup fin;
   fin.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
   fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};

@@ -82,7 +82,8 @@ std::string dropped_face_problem(const TriangleSoup& soup, std::size_t face) {
   for (const std::uint32_t v : t) {
     const std::size_t fans = fans_at(soup, v);
     if (fans > 1)
-      return name + " makes " + vertex_text(v) + " non-manifold (" + std::to_string(fans) + " fans of faces meet there)";
+      return name + " makes " + vertex_text(v) + " non-manifold (" + std::to_string(fans) +
+             " fans of faces meet there)";
   }
   return name + " cannot be added to a halfedge mesh";
 }

@@ -53,7 +53,8 @@ LoadedMesh load_mesh(const std::string& path) {
 void require_all_faces(const LoadedMesh& loaded, const std::string& stage) {
   if (loaded.build.dropped_faces.empty()) return;
   detail::fail(loaded.read.path, dropped_faces_problem(loaded.soup, loaded.build) + "; " + stage +
-                                     " needs a manifold, consistently oriented surface (meshprep quality lists the faces)");
+                                     " needs a manifold, consistently oriented surface (meshprep quality lists "
+                                     "the faces)");
 }
 
 void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions& options) {
