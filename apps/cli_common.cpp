@@ -24,13 +24,10 @@ void ensure_not_input(const std::string& output, const std::string& input) {
     throw InvalidInput(output + ": output would overwrite the input file");
 }
 
-void require_manifold(const LoadedMesh& loaded, const std::string& path, const std::string& stage) {
-  const std::vector<std::size_t>& dropped = loaded.build.dropped_faces;
-  if (dropped.empty()) return;
-  throw InvalidInput(path + ": face " + std::to_string(dropped.front()) +
-                     (dropped.size() > 1 ? " and " + std::to_string(dropped.size() - 1) + " more" : std::string()) +
-                     " make an edge or vertex non-manifold; " + stage +
-                     " needs a manifold surface (see meshprep quality for the list)");
+void add_samples_option(CLI::App& cmd, std::size_t& samples) {
+  cmd.add_option("--samples", samples, "Random samples per direction for the reference distances of the report")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
 }
 
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,

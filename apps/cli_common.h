@@ -27,14 +27,14 @@ void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 /// \throws InvalidInput if `output` names the same file as `input` (outputs never clobber inputs).
 void ensure_not_input(const std::string& output, const std::string& input);
 
-/// \throws InvalidInput naming the first face OpenMesh could not add (a non-manifold edge or
-/// vertex): `stage` ("simplification", "smoothing") needs a manifold surface.
-void require_manifold(const LoadedMesh& loaded, const std::string& path, const std::string& stage);
-
 /// \throws WorkFailed if `output` (a report against the input) has more self-intersecting face
 /// pairs than the input had, naming the first pair and what to try instead.
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
+
+/// Registers --samples on `cmd`: the random samples per direction behind the distances of the
+/// report (QualityParams::distance_samples), bound to `samples`.
+void add_samples_option(CLI::App& cmd, std::size_t& samples);
 
 /// A subcommand: registers its options on `app` and returns the action to run once parsed.
 using Action = std::function<int()>;

@@ -1,6 +1,7 @@
 // meshprep convert IN OUT [--binary]: between the surface formats, without changing the mesh.
 #include "cli_common.h"
 
+#include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 
 #include <iostream>
@@ -24,7 +25,11 @@ Action add_convert_command(CLI::App& app) {
     const TriangleSoup soup = read_soup(o->input, &read);
     WriteOptions options;
     options.binary = o->binary;
-    write_soup(soup, o->output, options);
+    try {
+      write_soup(soup, o->output, options);
+    } catch (const InvalidInput& e) {  // the format cannot hold this input: name both
+      throw InvalidInput(o->input + " -> " + e.what());
+    }
     std::cout << o->input << " -> " << o->output << ": " << soup.points.size() << " vertices, " << soup.triangles.size()
               << " triangles";
     if (read.polygons_triangulated > 0) std::cout << " (" << read.polygons_triangulated << " polygons triangulated)";

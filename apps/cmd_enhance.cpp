@@ -19,6 +19,7 @@ namespace {
 struct EnhanceOptions {
   std::string input, output, reference, json;
   EnhanceParams params;
+  std::size_t samples = QualityParams().distance_samples;
 };
 
 nlohmann::ordered_json tail_json(const QualityTail& tail) {
@@ -39,7 +40,7 @@ int run_enhance(EnhanceOptions o) {
     ensure_not_input(o.json, o.reference);
   }
   LoadedMesh loaded = load_mesh(o.input);
-  require_manifold(loaded, o.input, "enhancement");
+  require_all_faces(loaded, "enhancement");
   std::unique_ptr<TriangleSoup> reference;
   if (!o.reference.empty()) {
     reference = std::make_unique<TriangleSoup>(read_soup(o.reference));
@@ -52,7 +53,9 @@ int run_enhance(EnhanceOptions o) {
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 
   const TriangleSoup& against = reference ? *reference : loaded.soup;
-  QualityReport quality = analyze_quality(output, QualityParams(), &against);
+  QualityParams quality_params;
+  quality_params.distance_samples = o.samples;
+  QualityReport quality = analyze_quality(output, quality_params, &against);
   quality.path = o.output;
   quality.reference->path = reference ? o.reference : o.input;
   refuse_new_intersections(quality, result.input_self_intersections, o.input, "enhanced",
@@ -123,6 +126,7 @@ Action add_enhance_command(CLI::App& app) {
       ->check(CLI::Range(1.0, 180.0))
       ->capture_default_str();
   cmd->add_flag("--flips,!--no-flips", o->params.flips, "Flip edges where moving vertices cannot help (default on)");
+  add_samples_option(*cmd, o->samples);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");
   return [o] { return run_enhance(*o); };
 }

@@ -16,11 +16,11 @@ namespace {
 struct QualityOptions {
   std::string input, reference, json, csv, vtk, html, fail_on;
   std::size_t worst = 10;
-  std::size_t samples = 1000000;
+  std::size_t samples = QualityParams().distance_samples;
 };
 
-// Faces a halfedge mesh cannot hold (non-manifold edge or vertex): later stages would drop them,
-// so the user hears about it here, with the indices.
+// Faces a halfedge mesh cannot hold (non-manifold, oriented against a neighbour, repeated):
+// the processing stages would refuse the surface, so the user hears about it here, with the indices.
 nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport& read) {
   MeshBuildReport build;
   mesh_from_soup(soup, &build);
@@ -34,8 +34,8 @@ nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport
     std::cerr << "meshprep: note: " << read.path << ": " << read.polygons_triangulated
               << " polygons with more than 3 corners were fan-triangulated\n";
   if (!build.dropped_faces.empty()) {
-    std::cerr << "meshprep: warning: " << read.path << ": " << build.dropped_faces.size()
-              << " faces make an edge or vertex non-manifold; the processing stages would drop them (faces";
+    std::cerr << "meshprep: warning: " << read.path << ": " << dropped_faces_problem(soup, build)
+              << "; the processing stages would refuse the surface (faces";
     for (std::size_t i = 0; i < build.dropped_faces.size() && i < 10; ++i) std::cerr << ' ' << build.dropped_faces[i];
     std::cerr << (build.dropped_faces.size() > 10 ? " ...)\n" : ")\n");
   }
@@ -94,9 +94,7 @@ Action add_quality_command(CLI::App& app) {
   cmd->add_option("--fail-on", o->fail_on,
                   "Quality gate: exit 1 if any condition holds, e.g. \"radius_ratio.p95>3,closed=false\"");
   cmd->add_option("--worst", o->worst, "How many worst faces to list")->capture_default_str();
-  cmd->add_option("--samples", o->samples, "Random samples per direction for reference distances")
-      ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
+  add_samples_option(*cmd, o->samples);
   return [o] { return run_quality(*o); };
 }
 

@@ -25,7 +25,7 @@ const std::map<std::string, CollapseCost> kCosts = {
 struct SimplifyOptions {
   std::string input, output, json, cost = "bending";
   double ratio = 0, max_error = 0, min_angle = 20;
-  std::size_t faces = 0;
+  std::size_t faces = 0, samples = QualityParams().distance_samples;
   bool no_polish = false, enhance = false;
 };
 
@@ -45,7 +45,7 @@ int run_simplify(const SimplifyOptions& o) {
   ensure_not_input(o.json, o.input);
   if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
-  require_manifold(loaded, o.input, "simplification");
+  require_all_faces(loaded, "simplification");
   SimplifyParams params;
   params.keep_ratio = o.ratio > 0 ? o.ratio : 1.0;
   params.target_faces = o.faces;
@@ -61,6 +61,7 @@ int run_simplify(const SimplifyOptions& o) {
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 
   QualityParams quality_params;
+  quality_params.distance_samples = o.samples;
   QualityReport quality = analyze_quality(output, quality_params, &loaded.soup);
   quality.path = o.output;
   quality.reference->path = o.input;
@@ -140,6 +141,7 @@ Action add_simplify_command(CLI::App& app) {
                 "Reduce in three stages, each followed by the statistical enhancement against the input (meshprep "
                 "enhance; the paper's Figure 6 combination)");
   cmd->add_flag("--no-polish", o->no_polish, "Skip the flips and relaxation that improve the angles, and the fit to the original, after collapsing");
+  add_samples_option(*cmd, o->samples);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_simplify(*o); };
 }

@@ -26,13 +26,14 @@ const std::map<std::string, SmoothMethod> kMethods = {
 struct SmoothOptions {
   std::string input, output, json, method = "rbf";
   SmoothParams params;
+  std::size_t samples = QualityParams().distance_samples;
 };
 
 int run_smooth(SmoothOptions o) {
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   LoadedMesh loaded = load_mesh(o.input);
-  require_manifold(loaded, o.input, "smoothing");
+  require_all_faces(loaded, "smoothing");
   o.params.method = kMethods.at(o.method);
   ProgressBar bar("smooth");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
@@ -40,7 +41,9 @@ int run_smooth(SmoothOptions o) {
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 
-  QualityReport quality = analyze_quality(output, QualityParams(), &loaded.soup);
+  QualityParams quality_params;
+  quality_params.distance_samples = o.samples;
+  QualityReport quality = analyze_quality(output, quality_params, &loaded.soup);
   quality.path = o.output;
   quality.reference->path = o.input;
   const std::size_t input_intersections =
@@ -125,6 +128,7 @@ Action add_smooth_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--preserve-volume", o->params.preserve_volume,
                 "Closed surfaces: offset the result along its normals so that the enclosed volume is unchanged");
+  add_samples_option(*cmd, o->samples);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_smooth(*o); };
 }

@@ -77,6 +77,9 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
     throw WorkFailed(o.input + ": the surface is not FEM-ready (" + reasons + ")" +
                      (o.diagnose.empty() ? "; --diagnose FILE writes the offending faces" : "; offending faces in " + o.diagnose));
   }
+  if (readiness.isolated_vertices > 0)
+    std::cerr << "meshprep: note: " << o.input << ": " << readiness.isolated_vertices
+              << " isolated vertices (no face uses them) are left out of the tets\n";
   TriangleSoup oriented = soup;
   if (readiness.inward_oriented) {  // TetGen does not mind, but our boundary tags' normals do
     for (Triangle& t : oriented.triangles) std::swap(t[1], t[2]);

@@ -48,9 +48,7 @@ int simplify_and_enhance(const std::string& input_path, const std::string& outpu
 
   // 1. Read the scan; simplification needs every face in the halfedge mesh (a manifold surface).
   LoadedMesh scan = load_mesh(input_path);
-  if (!scan.build.dropped_faces.empty())
-    throw InvalidInput(input_path + ": " + std::to_string(scan.build.dropped_faces.size()) +
-                       " faces make an edge or vertex non-manifold");
+  require_all_faces(scan, "simplification");
   const TriangleSoup& original = scan.soup;
 
   // 2. Measure it.

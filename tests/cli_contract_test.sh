@@ -113,7 +113,7 @@ OFF
 3 0 1 4
 EOM
 "$bin" quality fin.off --json out/fin.json > /dev/null 2> err.txt; check "non-manifold face" 0 $?
-expect_error "non-manifold face reported" "faces make an edge or vertex non-manifold.*4"
+expect_error "non-manifold face reported" "face 4 makes the edge 0-1 non-manifold.*(faces 4)"
 python3 -c "
 import json; j = json.load(open('out/fin.json'))
 assert j['non_manifold_edges'] == 1 and not j['manifold'] and j['input']['faces_not_manifold_representable_indices'] == [4], j" \

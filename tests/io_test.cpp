@@ -555,6 +555,8 @@ TEST_F(IoTest, XyzErrorsNameTheLine) {
   EXPECT_NE(message("word.xyz", "0 0 0\n1 a 0\n").find("line 2: 'a' is not a number"), std::string::npos);
   EXPECT_NE(message("none.xyz", "# only a comment\n").find("no points"), std::string::npos);
   EXPECT_NE(message("empty.xyz", "").find("empty"), std::string::npos);
+  EXPECT_NE(message("mesh.off", "OFF\n0 0 0\n").find("mesh.off: a surface mesh (.off), not a point set"),
+            std::string::npos);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -579,6 +581,30 @@ TEST_F(IoTest, RepeatedIndexFaceIsDropped) {
   const TriMesh mesh = mesh_from_soup(soup, &report);
   EXPECT_EQ(report.dropped_faces, (std::vector<std::size_t>{4}));
   EXPECT_EQ(mesh.n_faces(), 4u);
+}
+
+TEST_F(IoTest, DroppedFacesAreExplained) {
+  const auto first_problem = [](const TriangleSoup& soup) {
+    MeshBuildReport report;
+    mesh_from_soup(soup, &report);
+    return dropped_faces_problem(soup, report);
+  };
+  TriangleSoup repeated = tetrahedron(), duplicate = tetrahedron(), flipped = tetrahedron(), bowtie = tetrahedron();
+  repeated.triangles.push_back({1, 1, 2});
+  duplicate.triangles.push_back(duplicate.triangles[1]);
+  flipped.triangles[3] = {1, 3, 2};
+  bowtie.points.insert(bowtie.points.end(), {{-1, 0, 0}, {0, -1, 0}, {0, 0, -1}});  // a second tet at vertex 0
+  bowtie.triangles.insert(bowtie.triangles.end(), {{0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}});
+  EXPECT_EQ(first_problem(tetrahedron()), "");
+  EXPECT_EQ(first_problem(repeated), "face 4 has two corners at vertex 1");
+  EXPECT_EQ(first_problem(duplicate), "face 4 repeats face 1");
+  EXPECT_EQ(first_problem(flipped), "face 3 is oriented against face 0 (both run from vertex 2 to 1)");
+  EXPECT_EQ(first_problem(bowtie),
+            "face 4 makes vertex 0 non-manifold (2 fans of faces meet there) (2 more faces cannot be added either)");
+  TriangleSoup fin;
+  fin.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  EXPECT_EQ(first_problem(fin), "face 2 makes the edge 0-1 non-manifold (3 faces share it)");
 }
 
 TEST_F(IoTest, SoupFromMeshSkipsDeletedElements) {

@@ -143,7 +143,7 @@ class ReportFiles : public ::testing::Test {
 TEST(ReportJson, HasTheStableKeysInOrder) {
   const nlohmann::ordered_json j = to_json(two_triangle_report());
   const std::vector<std::string> expected = {
-      "file", "vertices", "faces", "edges", "components", "border_edges", "boundary_loops", "non_manifold_edges",
+      "file", "vertices", "isolated_vertices", "faces", "edges", "components", "border_edges", "boundary_loops", "non_manifold_edges",
       "non_manifold_vertices", "closed", "manifold", "oriented", "euler_characteristic", "genus",
       "degenerate_faces", "duplicate_faces", "self_intersections", "self_intersections_capped",
       "self_intersecting_pairs", "area", "volume", "bbox_diagonal", "bbox_min", "bbox_max", "radius_ratio",
@@ -199,9 +199,9 @@ TEST(ReportJson, ReferenceIsPresentWithAllKeysWhenSet) {
   r.reference = reference_comparison();
   const nlohmann::ordered_json j = to_json(r);
   const std::vector<std::string> keys = keys_of(j);
-  ASSERT_EQ(keys.size(), 35u);
-  EXPECT_EQ(keys[33], "reference");
-  EXPECT_EQ(keys[34], "time_seconds");
+  ASSERT_EQ(keys.size(), 36u);
+  EXPECT_EQ(keys[34], "reference");
+  EXPECT_EQ(keys[35], "time_seconds");
   const std::vector<std::string> expected = {"file", "hausdorff", "hausdorff_relative", "rms_relative",
                                              "mean_relative", "reference_bbox_diagonal", "volume_change_percent",
                                              "samples"};

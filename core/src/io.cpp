@@ -1,4 +1,4 @@
-// Format dispatch by extension: read_soup, load_mesh, write_mesh, extension_of.
+// Format dispatch by extension: read_soup, load_mesh, write_mesh, extension_of; require_all_faces.
 #include "meshprep/core/io.h"
 
 #include "readers.h"
@@ -48,6 +48,13 @@ LoadedMesh load_mesh(const std::string& path) {
   loaded.soup = read_soup(path, &loaded.read);
   loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
   return loaded;
+}
+
+void require_all_faces(const LoadedMesh& loaded, const std::string& stage) {
+  if (loaded.build.dropped_faces.empty()) return;
+  detail::fail(loaded.read.path, dropped_faces_problem(loaded.soup, loaded.build) + "; " + stage +
+                                     " needs a manifold, consistently oriented surface (meshprep quality lists "
+                                     "the faces)");
 }
 
 void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions& options) {

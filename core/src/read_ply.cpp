@@ -238,7 +238,10 @@ class PlyDataReader {
     const auto problem = [&](const std::string& text) {
       fail(path_, source.where() + "face " + std::to_string(i) + text);
     };
-    if (count < 3) problem(" has " + std::to_string(count) + " corners (at least 3 needed)");
+    // Usually a header that announces more vertices than there are: the faces' data was read as vertices.
+    if (count < 3)
+      problem(" has " + std::to_string(count) + " corners (at least 3 needed; is the header's vertex count, " +
+              std::to_string(vertex_->count) + ", right?)");
     corners_of_face_.clear();
     for (std::int64_t j = 0; j < count; ++j) {
       const std::int64_t index = source.integer(property.type);

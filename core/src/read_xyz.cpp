@@ -10,6 +10,9 @@ namespace meshprep {
 
 PointSet read_points(const std::string& path) {
   using namespace detail;
+  const std::string extension = extension_of(path);
+  if (extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
+    fail(path, "a surface mesh (." + extension + "), not a point set (.xyz: x y z per line)");
   const std::string data = read_file(path);
   if (data.empty()) fail(path, "empty file");
   TextScanner in(data, '#');

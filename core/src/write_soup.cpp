@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <ostream>
+#include <sstream>
 
 namespace meshprep {
 namespace {
@@ -165,6 +166,25 @@ void check_writable(const TriangleSoup& soup, const std::string& path) {
   }
 }
 
+// Binary STL holds float32 coordinates: far from the origin (or for tiny features) they cannot
+// tell a triangle's corners apart, and the file would hold a different, degenerate mesh.
+void check_float32_corners(const TriangleSoup& soup, const std::string& path) {
+  const auto as_float = [](const Vec3& p) { return p.cast<float>().eval(); };
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& a = soup.points[t[k]];
+      const Vec3& b = soup.points[t[(k + 1) % 3]];
+      if (a == b || as_float(a) != as_float(b)) continue;
+      std::ostringstream problem;
+      problem << "binary STL stores float32 coordinates, which cannot tell the corners of triangle " << f
+              << " apart (" << (a - b).norm() << " from each other, " << a.cwiseAbs().maxCoeff()
+              << " from the origin); write PLY, OFF, OBJ or ASCII STL instead";
+      detail::fail(path, problem.str());
+    }
+  }
+}
+
 // A PLY property name is one word; x, y and z are taken by the coordinates.
 bool is_valid_scalar_name(const std::string& name) {
   if (name.empty() || name == "x" || name == "y" || name == "z") return false;
@@ -207,6 +227,7 @@ void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOp
   check_writable(soup, path);
   check_vertex_scalars(soup, options.vertex_scalars, path);
   const bool binary = options.binary && (extension == "ply" || extension == "stl");
+  if (binary && extension == "stl") check_float32_corners(soup, path);
   write_file_atomically(
       path,
       [&](std::ostream& stream) {

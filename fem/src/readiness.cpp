@@ -82,6 +82,7 @@ Readiness check_fem_readiness(const TriangleSoup& surface) {
       "the surface passes through itself; fix the listed faces (open the --diagnose mesh next to the input)",
       si_faces);
   if (topo.closed && topo.oriented) r.inward_oriented = signed_volume(surface) < 0;
+  r.isolated_vertices = topo.isolated_vertices;
   return r;
 }
 
@@ -107,6 +108,7 @@ TriangleSoup diagnosis_mesh(const TriangleSoup& surface, const Readiness& readin
 nlohmann::ordered_json to_json(const Readiness& readiness) {
   nlohmann::ordered_json j;
   j["ready"] = readiness.ready();
+  j["isolated_vertices"] = readiness.isolated_vertices;
   j["problems"] = nlohmann::ordered_json::array();
   for (const ReadinessProblem& p : readiness.problems)
     j["problems"].push_back(

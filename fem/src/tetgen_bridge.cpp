@@ -4,6 +4,8 @@
 // (isolated_call.h) so that anything worse than a throw is reported too.
 #include "meshprep/fem/tetrahedralize.h"
 
+#include "meshprep/core/origin_shift.h"
+
 #include "isolated_call.h"
 
 #include <tetgen.h>
@@ -190,14 +192,31 @@ std::string tetgen_switches(const TetParams& params, double enclosed_volume) {
 }
 
 SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
+  constexpr std::uint32_t unused = ~std::uint32_t(0);
+  std::vector<std::uint32_t> index(surface.points.size(), unused);
+  for (const Triangle& t : surface.triangles)
+    for (const std::uint32_t v : t) index[v] = 0;
   SurfacePlc plc;
-  plc.points = surface.points;
-  for (const Triangle& t : surface.triangles) plc.facets.push_back({t[0], t[1], t[2]});
+  for (std::size_t v = 0; v < surface.points.size(); ++v) {
+    if (index[v] == unused) continue;
+    index[v] = static_cast<std::uint32_t>(plc.points.size());
+    plc.points.push_back(surface.points[v]);
+  }
+  for (const Triangle& t : surface.triangles) plc.facets.push_back({index[t[0]], index[t[1]], index[t[2]]});
   plc.tags.assign(plc.facets.size(), tag);
   return plc;
 }
 
-TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params) {
+TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
+  // TetGen's Steiner points, tolerances and our enclosed volume (the cones below) are computed in
+  // absolute coordinates: far from the origin TetGen gets the surface moved next to it.
+  const Vec3 shift = origin_shift(surface.points);
+  SurfacePlc moved;
+  if (!shift.isZero()) {
+    moved = surface;
+    for (Vec3& p : moved.points) p -= shift;
+  }
+  const SurfacePlc& plc = shift.isZero() ? surface : moved;
   double six_volume = 0;  // enclosed volume for a relative size bound (facets fanned from their first corner)
   for (const auto& facet : plc.facets)
     for (std::size_t k = 1; k + 1 < facet.size(); ++k)
@@ -222,6 +241,7 @@ TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params) {
       break;
   }
   TetMesh mesh = deserialise(in);
+  for (Vec3& p : mesh.points) p += shift;
   if (mesh.tets.empty())
     throw TetgenError(0, "TetGen produced no tetrahedra: the surface does not enclose a volume (holes let the "
                          "exterior removal leak in)");

@@ -165,13 +165,7 @@ class Run {
     StageRecord record = started("check");
     const Clock::time_point start = Clock::now();
     LoadedMesh loaded = load_mesh(result_.input);
-    if (!loaded.build.dropped_faces.empty())
-      throw InvalidInput(result_.input + ": face " + std::to_string(loaded.build.dropped_faces.front()) +
-                         (loaded.build.dropped_faces.size() > 1
-                              ? " and " + std::to_string(loaded.build.dropped_faces.size() - 1) + " more"
-                              : std::string()) +
-                         " make an edge or vertex non-manifold; the pipeline needs a manifold surface (meshprep "
-                         "quality lists them)");
+    require_all_faces(loaded, "the pipeline");
     result_.input_surface = std::move(loaded.soup);
     mesh_ = std::move(loaded.mesh);
     record.faces_before = record.faces_after = mesh_.n_faces();

@@ -10,6 +10,7 @@
 #include "topology_cleanup.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_bvh.h"
 
@@ -60,8 +61,10 @@ void check(const EnhanceParams& params, const TriMesh& mesh) {
 EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const EnhanceParams& params) {
   check(params, mesh);
   const auto start = std::chrono::steady_clock::now();
+  const ShiftedToOrigin near_origin(mesh);
   const TriangleSoup input = soup_from_mesh(mesh);
-  const TriangleSoup& surface = reference ? *reference : input;
+  const TriangleSoup moved_reference = reference ? near_origin.moved(*reference) : TriangleSoup();
+  const TriangleSoup& surface = reference ? moved_reference : input;
   const double max_deviation = params.max_deviation * bounding_box(surface).diagonal().norm();
   const detail::SurfaceConstraints constraints(mesh, surface, params.feature_angle_deg);
   const std::size_t allowed_intersections = find_self_intersections(input).count;

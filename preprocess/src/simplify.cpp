@@ -7,6 +7,7 @@
 #include "surface_fit.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_bvh.h"
 
@@ -230,6 +231,7 @@ SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
   if (params.min_angle_deg < 0 || params.min_angle_deg >= 60)
     throw InvalidInput("the minimum angle must be in [0, 60) degrees");
   if (params.max_error < 0) throw InvalidInput("the maximum error must not be negative");
+  const ShiftedToOrigin near_origin(mesh);  // quadrics square the coordinates
   SimplifyResult result =
       params.enhance && params.cost != CollapseCost::Quadric ? simplify_and_enhance(mesh, params) : reduce(mesh, params);
   if (params.progress) params.progress(1.0);

@@ -5,6 +5,7 @@
 #include "rbf_smoothing.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"
 
@@ -50,6 +51,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
   if (!(params.smoothing >= 0) || !(params.feature_angle_deg > 0 && params.feature_angle_deg <= 180))
     throw InvalidInput("smooth: the smoothing must be >= 0 and the feature angle in (0, 180] degrees");
   const auto start = std::chrono::steady_clock::now();
+  const ShiftedToOrigin near_origin(mesh);
   SmoothResult result;
   const std::vector<TriMesh::Point> before(mesh.points(), mesh.points() + mesh.n_vertices());
   const bool is_closed = closed(mesh);

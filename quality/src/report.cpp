@@ -17,6 +17,7 @@ constexpr std::size_t kListedPairs = 100;
 void fill_topology(const TriangleSoup& soup, QualityReport& r) {
   const Topology topo = analyze_topology(soup);
   r.vertices = topo.referenced_vertices;
+  r.isolated_vertices = topo.isolated_vertices;
   r.faces = soup.triangles.size();
   r.edges = topo.edges;
   r.components = topo.components;

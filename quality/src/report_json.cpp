@@ -51,6 +51,7 @@ nlohmann::ordered_json to_json(const QualityReport& report) {
   Json j;
   j["file"] = report.path;
   j["vertices"] = report.vertices;
+  j["isolated_vertices"] = report.isolated_vertices;
   j["faces"] = report.faces;
   j["edges"] = report.edges;
   j["components"] = report.components;

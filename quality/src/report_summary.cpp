@@ -17,7 +17,10 @@ SummaryRow check_row(const std::string& label, std::size_t problems, const std::
 
 SummarySection counts(const QualityReport& r) {
   return {"Counts",
-          {{"vertices", std::to_string(r.vertices)},
+          {{"vertices", std::to_string(r.vertices) +
+                            (r.isolated_vertices ? " (and " + std::to_string(r.isolated_vertices) +
+                                                       " isolated, which no face uses)"
+                                                 : std::string())},
            {"faces", std::to_string(r.faces)},
            {"edges", std::to_string(r.edges)},
            {"components", std::to_string(r.components)}}};

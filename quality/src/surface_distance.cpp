@@ -1,6 +1,7 @@
 #include "meshprep/quality/surface_distance.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/triangle_bvh.h"
 
 #include <tbb/parallel_for.h>
@@ -90,9 +91,11 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
   return result;
 }
 
-// The soup without zero-area triangles (they carry no surface and would attract no samples).
-TriangleSoup without_degenerate(const TriangleSoup& s) {
+// The soup without zero-area triangles (they carry no surface and would attract no samples),
+// moved by -shift.
+TriangleSoup without_degenerate(const TriangleSoup& s, const Vec3& shift) {
   TriangleSoup out{s.points, {}};
+  for (Vec3& p : out.points) p -= shift;
   for (const Triangle& t : s.triangles)
     if (triangle_area(s, t) > 0) out.triangles.push_back(t);
   return out;
@@ -103,7 +106,9 @@ TriangleSoup without_degenerate(const TriangleSoup& s) {
 double SurfaceDistance::rms() const { return std::sqrt(0.5 * (a_to_b.rms * a_to_b.rms + b_to_a.rms * b_to_a.rms)); }
 
 SurfaceDistance surface_distance(const TriangleSoup& a, const TriangleSoup& b, const DistanceParams& params) {
-  const TriangleSoup sa = without_degenerate(a), sb = without_degenerate(b);
+  // Far from the origin, point-triangle distances are measured next to it (origin_shift.h).
+  const Vec3 shift = origin_shift(a.points);
+  const TriangleSoup sa = without_degenerate(a, shift), sb = without_degenerate(b, shift);
   if (sa.triangles.empty() || sb.triangles.empty())
     throw InvalidInput("surface distance: a surface has no triangle of positive area");
   const TriangleBvh bvh_a(sa), bvh_b(sb);

@@ -39,9 +39,15 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 double signed_volume(const TriangleSoup& soup) {
+  if (soup.triangles.empty()) return 0;
+  // Cones from a corner of the surface, not from the origin: far from the origin (a survey at
+  // 1e9 m) the products of absolute coordinates cancel to nothing.
+  const Vec3 apex = soup.points[soup.triangles.front()[0]];
   double six_volume = 0;
-  for (const Triangle& t : soup.triangles)
-    six_volume += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
+  for (const Triangle& t : soup.triangles) {
+    const Vec3 a = soup.points[t[0]] - apex, b = soup.points[t[1]] - apex, c = soup.points[t[2]] - apex;
+    six_volume += a.dot(b.cross(c));
+  }
   return six_volume / 6.0;
 }
 

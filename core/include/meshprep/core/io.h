@@ -49,6 +49,11 @@ struct LoadedMesh {
 /// read_soup + mesh_from_soup.
 LoadedMesh load_mesh(const std::string& path);
 
+/// \throws InvalidInput "<path>: <why the first face was dropped>; <stage> needs a manifold,
+/// consistently oriented surface (...)" if the halfedge mesh lacks faces of the file (see
+/// dropped_faces_problem): `stage` ("simplification") cannot work on what the file holds.
+void require_all_faces(const LoadedMesh& loaded, const std::string& stage);
+
 /// A named value per point of a mesh (e.g. the surface variation sigma, see quality/surface_variation.h).
 struct VertexScalar {
   std::string name;            ///< one printable ASCII word, not x, y or z
@@ -71,7 +76,8 @@ void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions
 
 /// Write a soup (format from the extension), atomically. Nothing is written when the input is
 /// invalid.
-/// \throws InvalidInput for an unknown extension, a non-finite point or an index out of range, and
+/// \throws InvalidInput for an unknown extension, a non-finite point or an index out of range, a
+/// binary STL whose float32 coordinates would make two corners of a triangle one, and
 /// for a vertex scalar with an empty, duplicate, non-printable or x/y/z name, a value count other
 /// than soup.points.size() or a non-finite value; IoError if the file cannot be written.
 void write_soup(const TriangleSoup& soup, const std::string& path, const WriteOptions& options = {});
@@ -82,9 +88,9 @@ struct PointSet {
   std::vector<Vec3> normals;  ///< empty, or one per point
 };
 
-/// Read an XYZ point set.
-/// \throws InvalidInput on a malformed line (named by its number), NaN/Inf, a mix of 3- and
-/// 6-column lines, or no points; IoError if unreadable.
+/// Read an XYZ point set (any extension but those of the mesh formats, which are refused).
+/// \throws InvalidInput for a mesh extension, on a malformed line (named by its number), NaN/Inf, a
+/// mix of 3- and 6-column lines, or no points; IoError if unreadable.
 PointSet read_points(const std::string& path);
 
 /// Lower-case extension without the dot ("off" for "a/B.OFF"); empty if none.

@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace meshprep {
@@ -61,6 +62,15 @@ struct MeshBuildReport {
 
 /// Build a halfedge mesh from a soup; faces OpenMesh cannot represent are listed in `report`.
 TriMesh mesh_from_soup(const TriangleSoup& soup, MeshBuildReport* report = nullptr);
+
+/// Why mesh_from_soup could not add face `face` of `soup`, as a phrase that names it: "face 12
+/// has two corners at vertex 0", "face 12 repeats face 3", "face 12 makes the edge 0-1 non-manifold (3
+/// faces share it)", "face 5 is oriented against face 2 (both run from vertex 1 to 3)" or "face 4
+/// makes vertex 0 non-manifold (2 fans of faces meet there)". O(faces).
+std::string dropped_face_problem(const TriangleSoup& soup, std::size_t face);
+
+/// dropped_face_problem of the first face `report` lists, and how many more it lists; empty if none.
+std::string dropped_faces_problem(const TriangleSoup& soup, const MeshBuildReport& report);
 
 inline Vec3 to_eigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 inline OpenMesh::Vec3d to_openmesh(const Vec3& p) { return {p.x(), p.y(), p.z()}; }

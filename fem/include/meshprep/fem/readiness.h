@@ -26,6 +26,7 @@ struct Readiness {
   bool ready() const { return problems.empty(); }
   std::vector<ReadinessProblem> problems;
   bool inward_oriented = false;  ///< consistently oriented but enclosing negative volume (not a problem: flipped)
+  std::size_t isolated_vertices = 0;  ///< points no face uses (not a problem: plc_from_surface leaves them out)
 };
 
 /// Check `surface` for tetrahedralisation.

@@ -49,7 +49,9 @@ TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params);
 /// The TetGen switches for `params` ("pzQ" + q, a, Y), given the enclosed volume.
 std::string tetgen_switches(const TetParams& params, double enclosed_volume);
 
-/// The PLC of a closed triangle surface, every facet tagged `tag`.
+/// The PLC of a closed triangle surface, every facet tagged `tag`. Points no face uses are left
+/// out (TetGen would make those inside the volume tet vertices and drop the others); the others
+/// keep their order.
 SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag = 1);
 
 }  // namespace meshprep

@@ -46,7 +46,8 @@ struct QualityReport {
   std::string path;  ///< the file measured (may be empty for an in-memory mesh)
 
   // Counts and topology (computed on the soup as written, see topology.h)
-  std::size_t vertices = 0;  ///< vertices referenced by a face
+  std::size_t vertices = 0;           ///< vertices referenced by a face
+  std::size_t isolated_vertices = 0;  ///< points of the file that no face uses
   std::size_t faces = 0;
   std::size_t edges = 0;
   std::size_t components = 0;

@@ -30,8 +30,9 @@ struct TriangleShape {
 /// Shape of the triangle (a, b, c).
 TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c);
 
-/// Signed volume enclosed by the soup's faces, sum of p0 . (p1 x p2) / 6 (divergence theorem);
-/// meaningful for a closed, consistently oriented surface (positive for outward normals).
+/// Signed volume enclosed by the soup's faces, sum of (p0 - o) . ((p1 - o) x (p2 - o)) / 6 with o a
+/// corner of the first face (divergence theorem; o near the surface keeps the figure exact far
+/// from the origin); meaningful for a closed, consistently oriented surface (positive for outward normals).
 double signed_volume(const TriangleSoup& soup);
 
 /// Shape of every triangle of a soup, in face order (parallel over faces).
