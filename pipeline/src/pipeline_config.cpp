@@ -246,7 +246,10 @@ constexpr const char* kRunSection = "run";  // provenance written into pipeline.
 void apply_config(const Json& json, const std::string& origin, PipelineConfig& config) {
   if (!json.is_object()) throw InvalidInput(origin + ": a configuration is a JSON object of sections, not " + shown(json));
   auto all = sections(config);
-  for (const auto& [section_name, value] : json.items()) {
+  // Named references, not structured bindings: C++17 lambdas cannot capture those (clang refuses).
+  for (const auto& section_item : json.items()) {
+    const std::string& section_name = section_item.key();
+    const Json& value = section_item.value();
     if (section_name == kRunSection) continue;
     auto section = std::find_if(all.begin(), all.end(), [&](const auto& s) { return s.first == section_name; });
     if (section == all.end()) {
@@ -256,7 +259,9 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
     }
     if (!value.is_object()) throw InvalidInput(origin + ": " + section_name + ": expected an object of keys, not " + shown(value));
     std::vector<Key>& keys = section->second;
-    for (const auto& [key_name, key_value] : value.items()) {
+    for (const auto& key_item : value.items()) {
+      const std::string& key_name = key_item.key();
+      const Json& key_value = key_item.value();
       auto key = std::find_if(keys.begin(), keys.end(), [&](const Key& k) { return k.name == key_name; });
       if (key == keys.end()) {
         std::string valid;
