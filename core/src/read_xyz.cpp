@@ -8,9 +8,7 @@
 
 namespace meshprep {
 
-PointSet read_points(const std::string& path) {
-  using namespace detail;
-  const std::string data = read_file(path);
+PointSet detail::parse_points(const std::string& path, std::string_view data) {
   if (data.empty()) fail(path, "empty file");
   TextScanner in(data, '#');
   const auto fail_here = [&](const std::string& problem) { fail(path, at_line(in.line()) + problem); };
@@ -41,5 +39,7 @@ PointSet read_points(const std::string& path) {
   if (set.points.empty()) fail(path, "no points");
   return set;
 }
+
+PointSet read_points(const std::string& path) { return detail::parse_points(path, detail::read_file(path)); }
 
 }  // namespace meshprep

@@ -1,5 +1,7 @@
 #include "meshprep/pipeline/pipeline_config.h"
 
+#include "config_text.h"
+
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/variation_rule.h"
 
@@ -278,19 +280,25 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
   }
 }
 
-void read_config_file(const std::string& path, PipelineConfig& config) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path + ": cannot open the configuration file");
+void detail::apply_config_text(std::string_view text, const std::string& origin, PipelineConfig& config) {
   Json json;
   try {
-    json = Json::parse(in);
+    json = Json::parse(text);
   } catch (const Json::parse_error& e) {
     // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
     const std::string what = e.what();
     const std::size_t at = what.find("] ");
-    throw InvalidInput(path + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
+    throw InvalidInput(origin + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
   }
-  apply_config(json, path, config);
+  apply_config(json, origin, config);
+}
+
+void read_config_file(const std::string& path, PipelineConfig& config) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open the configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  detail::apply_config_text(text.str(), path, config);
 }
 
 OrderedJson to_json(const PipelineConfig& config) {
