@@ -284,8 +284,9 @@ void detail::apply_config_text(std::string_view text, const std::string& origin,
   Json json;
   try {
     json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
+  } catch (const Json::exception& e) {
+    // A parse_error or, for a number beyond the double range, an out_of_range; e.what() reads
+    // "[json.exception.parse_error.101] parse error at line L, column C: ..."
     const std::string what = e.what();
     const std::size_t at = what.find("] ");
     throw InvalidInput(origin + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
