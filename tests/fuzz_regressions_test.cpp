@@ -59,5 +59,25 @@ TEST_F(FuzzRegression, AConfigNumberBeyondTheDoubleRangeIsInvalidJson) {
   }
 }
 
+// The messages quoted the offending value with nlohmann's dump(), which recurses once per level:
+// 10^5 nested brackets overflowed the stack (a crash, not a message). Found with a hand-made input:
+// the fuzzers' inputs stay under 4 KiB.
+TEST_F(FuzzRegression, ADeeplyNestedConfigValueIsNamedNotDumped) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  const struct {
+    std::string text, message;
+  } cases[] = {
+      {deep, "a configuration is a JSON object of sections, not an array nested over 16 levels deep"},
+      {R"({"simplify": {"ratio": )" + deep + "}}",
+       "simplify.ratio: expected null or a number in (0, 1], not an array nested over 16 levels deep"},
+      {R"({"smooth": {"iterations": [[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]}})",
+       "smooth.iterations: expected an integer in [1, 1000], not [[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = file("deep.json", c.text);
+    EXPECT_EQ(config_error(path), path + ": " + c.message);
+  }
+}
+
 }  // namespace
 }  // namespace meshprep

@@ -29,7 +29,25 @@ struct Key {
   std::function<OrderedJson()> write;
 };
 
-std::string shown(const Json& value) { return value.dump(); }
+// Whether `value` holds arrays or objects more than `levels` deep (recursing `levels` times at most).
+bool nested_deeper_than(const Json& value, int levels) {
+  if (!value.is_structured()) return false;
+  if (levels == 0) return true;
+  for (const Json& item : value)
+    if (nested_deeper_than(item, levels - 1)) return true;
+  return false;
+}
+
+// A value as a message quotes it. dump() recurses once per level of nesting, so a deeply nested
+// value (a file of 10^5 brackets) is named by its kind instead of overflowing the stack.
+std::string shown(const Json& value) {
+  constexpr int max_levels = 16;
+  if (nested_deeper_than(value, max_levels)) {
+    return std::string(value.is_array() ? "an array" : "an object") + " nested over " + std::to_string(max_levels) +
+           " levels deep";
+  }
+  return value.dump();
+}
 
 std::string range_text(double lo, double hi, bool lo_open) {
   std::ostringstream out;
