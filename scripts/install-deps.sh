@@ -13,6 +13,8 @@ packages=(
   gmsh python3-meshio python3-numpy
   # the browser that renders the HTML reports in the tests
   chromium
+  # clang and its libFuzzer runtime, for scripts/fuzz.sh
+  clang libclang-rt-dev
 )
 
 missing=()

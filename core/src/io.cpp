@@ -1,4 +1,5 @@
-// Format dispatch by extension: read_soup, load_mesh, write_mesh, extension_of; require_all_faces.
+// Format dispatch by extension: read_soup (and parse_soup, from memory), load_mesh, write_mesh, extension_of;
+// require_all_faces.
 #include "meshprep/core/io.h"
 
 #include "readers.h"
@@ -18,6 +19,18 @@ detail::SoupReader reader_for(const std::string& path, const std::string& extens
   detail::fail(path, detail::unknown_extension_problem(extension));
 }
 
+TriangleSoup parse_with(detail::SoupReader reader, const std::string& path, std::string_view data,
+                        ReadReport* report) {
+  if (data.empty()) detail::fail(path, "empty file");
+  ReadReport read;
+  read.path = path;
+  TriangleSoup soup = reader(path, data, read);
+  if (soup.triangles.empty()) detail::fail(path, "no faces");
+  read.triangles = soup.triangles.size();
+  if (report) *report = read;
+  return soup;
+}
+
 }  // namespace
 
 std::string extension_of(const std::string& path) {
@@ -28,19 +41,13 @@ std::string extension_of(const std::string& path) {
   return extension;
 }
 
-TriangleSoup read_soup(const std::string& path, ReadReport* report) {
-  const std::string extension = extension_of(path);
-  const detail::SoupReader reader = reader_for(path, extension);
+TriangleSoup detail::parse_soup(const std::string& path, std::string_view data, ReadReport* report) {
+  return parse_with(reader_for(path, extension_of(path)), path, data, report);
+}
 
-  const std::string data = detail::read_file(path);
-  if (data.empty()) detail::fail(path, "empty file");
-  ReadReport read;
-  read.path = path;
-  TriangleSoup soup = reader(path, data, read);
-  if (soup.triangles.empty()) detail::fail(path, "no faces");
-  read.triangles = soup.triangles.size();
-  if (report) *report = read;
-  return soup;
+TriangleSoup read_soup(const std::string& path, ReadReport* report) {
+  const detail::SoupReader reader = reader_for(path, extension_of(path));  // an unknown extension before a missing file
+  return parse_with(reader, path, detail::read_file(path), report);
 }
 
 LoadedMesh load_mesh(const std::string& path) {

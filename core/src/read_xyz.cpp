@@ -8,12 +8,7 @@
 
 namespace meshprep {
 
-PointSet read_points(const std::string& path) {
-  using namespace detail;
-  const std::string extension = extension_of(path);
-  if (extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
-    fail(path, "a surface mesh (." + extension + "), not a point set (.xyz: x y z per line)");
-  const std::string data = read_file(path);
+PointSet detail::parse_points(const std::string& path, std::string_view data) {
   if (data.empty()) fail(path, "empty file");
   TextScanner in(data, '#');
   const auto fail_here = [&](const std::string& problem) { fail(path, at_line(in.line()) + problem); };
@@ -43,6 +38,13 @@ PointSet read_points(const std::string& path) {
   }
   if (set.points.empty()) fail(path, "no points");
   return set;
+}
+
+PointSet read_points(const std::string& path) {
+  const std::string extension = extension_of(path);
+  if (extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
+    detail::fail(path, "a surface mesh (." + extension + "), not a point set (.xyz: x y z per line)");
+  return detail::parse_points(path, detail::read_file(path));
 }
 
 }  // namespace meshprep

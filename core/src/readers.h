@@ -20,6 +20,13 @@ TriangleSoup read_obj(const std::string& path, std::string_view data, ReadReport
 TriangleSoup read_ply(const std::string& path, std::string_view data, ReadReport& report);
 TriangleSoup read_stl(const std::string& path, std::string_view data, ReadReport& report);
 
+/// read_soup on content already in memory: the extension of `path` chooses the format and `path`
+/// names the input in messages; nothing touches the disk (the fuzz targets in fuzz/ call this).
+TriangleSoup parse_soup(const std::string& path, std::string_view data, ReadReport* report = nullptr);
+
+/// read_points on content already in memory, likewise.
+PointSet parse_points(const std::string& path, std::string_view data);
+
 /// The whole content of a file. \throws IoError "<path>: cannot open: <reason>" (or "cannot read").
 std::string read_file(const std::string& path);
 

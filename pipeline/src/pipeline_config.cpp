@@ -1,5 +1,7 @@
 #include "meshprep/pipeline/pipeline_config.h"
 
+#include "config_text.h"
+
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/variation_rule.h"
 
@@ -27,7 +29,25 @@ struct Key {
   std::function<OrderedJson()> write;
 };
 
-std::string shown(const Json& value) { return value.dump(); }
+// Whether `value` holds arrays or objects more than `levels` deep (recursing `levels` times at most).
+bool nested_deeper_than(const Json& value, int levels) {
+  if (!value.is_structured()) return false;
+  if (levels == 0) return true;
+  for (const Json& item : value)
+    if (nested_deeper_than(item, levels - 1)) return true;
+  return false;
+}
+
+// A value as a message quotes it. dump() recurses once per level of nesting, so a deeply nested
+// value (a file of 10^5 brackets) is named by its kind instead of overflowing the stack.
+std::string shown(const Json& value) {
+  constexpr int max_levels = 16;
+  if (nested_deeper_than(value, max_levels)) {
+    return std::string(value.is_array() ? "an array" : "an object") + " nested over " + std::to_string(max_levels) +
+           " levels deep";
+  }
+  return value.dump();
+}
 
 std::string range_text(double lo, double hi, bool lo_open) {
   std::ostringstream out;
@@ -246,7 +266,10 @@ constexpr const char* kRunSection = "run";  // provenance written into pipeline.
 void apply_config(const Json& json, const std::string& origin, PipelineConfig& config) {
   if (!json.is_object()) throw InvalidInput(origin + ": a configuration is a JSON object of sections, not " + shown(json));
   auto all = sections(config);
-  for (const auto& [section_name, value] : json.items()) {
+  // Named references, not structured bindings: C++17 lambdas cannot capture those (clang refuses).
+  for (const auto& section_item : json.items()) {
+    const std::string& section_name = section_item.key();
+    const Json& value = section_item.value();
     if (section_name == kRunSection) continue;
     auto section = std::find_if(all.begin(), all.end(), [&](const auto& s) { return s.first == section_name; });
     if (section == all.end()) {
@@ -256,7 +279,9 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
     }
     if (!value.is_object()) throw InvalidInput(origin + ": " + section_name + ": expected an object of keys, not " + shown(value));
     std::vector<Key>& keys = section->second;
-    for (const auto& [key_name, key_value] : value.items()) {
+    for (const auto& key_item : value.items()) {
+      const std::string& key_name = key_item.key();
+      const Json& key_value = key_item.value();
       auto key = std::find_if(keys.begin(), keys.end(), [&](const Key& k) { return k.name == key_name; });
       if (key == keys.end()) {
         std::string valid;
@@ -273,19 +298,26 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
   }
 }
 
-void read_config_file(const std::string& path, PipelineConfig& config) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path + ": cannot open the configuration file");
+void detail::apply_config_text(std::string_view text, const std::string& origin, PipelineConfig& config) {
   Json json;
   try {
-    json = Json::parse(in);
-  } catch (const Json::parse_error& e) {
-    // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    json = Json::parse(text);
+  } catch (const Json::exception& e) {
+    // A parse_error or, for a number beyond the double range, an out_of_range; e.what() reads
+    // "[json.exception.parse_error.101] parse error at line L, column C: ..."
     const std::string what = e.what();
     const std::size_t at = what.find("] ");
-    throw InvalidInput(path + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
+    throw InvalidInput(origin + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
   }
-  apply_config(json, path, config);
+  apply_config(json, origin, config);
+}
+
+void read_config_file(const std::string& path, PipelineConfig& config) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open the configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  detail::apply_config_text(text.str(), path, config);
 }
 
 OrderedJson to_json(const PipelineConfig& config) {

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of fuzz/ (clang, ASan + UBSan) into build-fuzz/ and runs each, one
+# after the other in a single process, for SECONDS_PER_TARGET (default 30) on a scratch copy of its
+# seed corpus (fuzz/corpus/TARGET; nothing is written into the repository). Prints one row per
+# target and fails if any found a crash, a leak, an input slower than 10 s or one needing more than
+# 2 GB; the input is kept in build-fuzz/artifacts/TARGET/ (replay it: build-fuzz/bin/fuzz_TARGET FILE).
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (targets: off obj ply stl xyz config)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-30}
+shift $(($# > 0 ? 1 : 0))
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(off obj ply stl xyz config)
+build=build-fuzz
+
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DMESHPREP_BUILD_FUZZERS=ON \
+  -DMESHPREP_BUILD_TESTS=OFF -DMESHPREP_BUILD_APPS=OFF -DMESHPREP_BUILD_BENCH=OFF -DMESHPREP_BUILD_EXAMPLES=OFF \
+  -DMESHPREP_INSTALL=OFF >/dev/null
+cmake --build "$build" -j 2 --target "${targets[@]/#/fuzz_}" >/dev/null
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+# The value of libFuzzer's final statistic $1 in log $2 (-print_final_stats=1), or "-" if the run died first.
+stat() { sed -n "s/^stat::$1: *//p" "$2" | tail -n 1 | grep . || echo -; }
+
+printf '%-7s %12s %8s %9s %10s %7s %8s\n' target executions seconds exec/s new_units corpus crashes
+failed=()
+for target in "${targets[@]}"; do
+  cp -r "fuzz/corpus/$target" "$scratch/$target"
+  artifacts="$build/artifacts/$target"
+  rm -rf "$artifacts" && mkdir -p "$artifacts"
+  log="$build/fuzz-$target.log"
+  start=$(date +%s)
+  status=0
+  "$build/bin/fuzz_$target" "$scratch/$target" -dict="fuzz/$target.dict" -max_total_time="$seconds" -timeout=10 \
+    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1 || status=$?
+  crashes=$(find "$artifacts" -type f | wc -l)
+  printf '%-7s %12s %8s %9s %10s %7s %8s\n' "$target" "$(stat number_of_executed_units "$log")" \
+    "$(($(date +%s) - start))" "$(stat average_exec_per_sec "$log")" "$(stat new_units_added "$log")" \
+    "$(find "$scratch/$target" -type f | wc -l)" "$crashes"
+  if [ "$status" -ne 0 ] || [ "$crashes" -ne 0 ]; then failed+=("$target"); fi
+done
+if [ ${#failed[@]} -gt 0 ]; then
+  for target in "${failed[@]}"; do
+    echo "fuzz: $target failed; the end of $build/fuzz-$target.log:" >&2
+    tail -n 30 "$build/fuzz-$target.log" >&2
+  done
+  exit 1
+fi
