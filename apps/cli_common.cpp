@@ -3,9 +3,10 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
 
+#include <algorithm>
 #include <filesystem>
-
 #include <iostream>
+#include <thread>
 
 namespace meshprep::cli {
 
@@ -29,6 +30,15 @@ void add_samples_option(CLI::App& cmd, std::size_t& samples) {
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
 }
+
+void add_threads_option(CLI::App& cmd, std::size_t& threads) {
+  cmd.add_option("--threads", threads, "Threads for the parallel parts (default: all cores)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1024}));
+}
+
+ThreadLimit::ThreadLimit(std::size_t threads)
+    : threads_(threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency())),
+      control_(tbb::global_control::max_allowed_parallelism, threads_) {}
 
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice) {

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
 
 #include <functional>
 #include <string>
@@ -35,6 +36,20 @@ void refuse_new_intersections(const QualityReport& output, std::size_t input_int
 /// Registers --samples on `cmd`: the random samples per direction behind the distances of the
 /// report (QualityParams::distance_samples), bound to `samples`.
 void add_samples_option(CLI::App& cmd, std::size_t& samples);
+
+/// Registers --threads on `cmd`: threads for the parallel parts, bound to `threads` (0: all cores).
+void add_threads_option(CLI::App& cmd, std::size_t& threads);
+
+/// While alive, the parallel parts (TBB) run on at most `threads` threads (0: all cores).
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(std::size_t threads);
+  std::size_t threads() const { return threads_; }
+
+ private:
+  std::size_t threads_;
+  tbb::global_control control_;
+};
 
 /// A subcommand: registers its options on `app` and returns the action to run once parsed.
 using Action = std::function<int()>;

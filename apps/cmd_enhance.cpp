@@ -1,5 +1,5 @@
 // meshprep enhance IN -o OUT [--reference ORIGINAL] [--iterations K] [--max-deviation E]
-//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--json FILE|-]
+//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
@@ -20,6 +20,7 @@ struct EnhanceOptions {
   std::string input, output, reference, json;
   EnhanceParams params;
   std::size_t samples = QualityParams().distance_samples;
+  std::size_t threads = 0;
 };
 
 nlohmann::ordered_json tail_json(const QualityTail& tail) {
@@ -33,6 +34,7 @@ nlohmann::ordered_json tail_json(const QualityTail& tail) {
 }
 
 int run_enhance(EnhanceOptions o) {
+  const ThreadLimit parallelism(o.threads);
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   if (!o.reference.empty()) {
@@ -127,6 +129,7 @@ Action add_enhance_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--flips,!--no-flips", o->params.flips, "Flip edges where moving vertices cannot help (default on)");
   add_samples_option(*cmd, o->samples);
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");
   return [o] { return run_enhance(*o); };
 }

@@ -10,15 +10,12 @@
 #include "meshprep/pipeline/pipeline_config.h"
 #include "meshprep/pipeline/pipeline_outputs.h"
 
-#include <tbb/global_control.h>
-
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 namespace meshprep::cli {
 namespace {
@@ -88,8 +85,7 @@ int run_pipeline_command(const PipelineOptions& o) {
   ensure_not_input(o.json, o.input);
   prepare_output_dir(o.outdir);  // before the work: an unwritable folder fails at once
 
-  const std::size_t threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-  const tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
+  const ThreadLimit parallelism(o.threads);
   std::ostream& log = o.json == "-" ? std::cerr : std::cout;
   std::unique_ptr<ProgressBar> bar;
   PipelineObserver observer;
@@ -120,7 +116,7 @@ int run_pipeline_command(const PipelineOptions& o) {
 
   nlohmann::ordered_json run;
   run["input"] = o.input;
-  run["threads"] = threads;
+  run["threads"] = parallelism.threads();
   run["versions"] = build_versions();
   const std::vector<std::string> files = write_pipeline_outputs(result, config, o.outdir, run);
   if (!o.json.empty()) emit_json(pipeline_summary(result, config), o.json);
@@ -162,8 +158,7 @@ Action add_pipeline_command(CLI::App& app) {
       ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
-  cmd->add_option("--threads", o->threads, "Threads for the parallel parts (default: all cores)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(1024)));
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--timeout", o->timeout,
                   "Stop after this many seconds (exit 1, nothing written); Ctrl-C stops at the next safe point (exit 130)")
       ->check(CLI::Range(1u, 1000000u));

@@ -1,5 +1,5 @@
 // meshprep quality MESH [--reference REF] [--json FILE|-] [--csv FILE] [--vtk FILE] [--html FILE]
-//                       [--fail-on CONDITIONS] [--worst N] [--samples N]
+//                       [--fail-on CONDITIONS] [--worst N] [--samples N] [--threads N]
 #include "cli_common.h"
 
 #include "meshprep/core/io.h"
@@ -17,6 +17,7 @@ struct QualityOptions {
   std::string input, reference, json, csv, vtk, html, fail_on;
   std::size_t worst = 10;
   std::size_t samples = QualityParams().distance_samples;
+  std::size_t threads = 0;
 };
 
 // Faces a halfedge mesh cannot hold (non-manifold, oriented against a neighbour, repeated):
@@ -43,6 +44,7 @@ nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport
 }
 
 int run_quality(const QualityOptions& o) {
+  const ThreadLimit parallelism(o.threads);
   // Parse the gate first: a typo in it is a usage error, found before any work.
   std::vector<GateCondition> gate;
   if (!o.fail_on.empty()) gate = parse_quality_gate(o.fail_on);
@@ -86,6 +88,7 @@ Action add_quality_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("quality", "Measure a surface mesh: topology, triangle shape, distance to a reference");
   cmd->add_option("mesh", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("--reference", o->reference, "Reference surface: adds Hausdorff/RMS/mean distance and volume change");
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the report as JSON to FILE ('-' = stdout, replaces the table)");
   cmd->add_option("--csv", o->csv, "Write one row per face to FILE");
   cmd->add_option("--vtk", o->vtk, "Write the mesh with per-face metrics as cell data and the surface variation "

@@ -1,6 +1,6 @@
 // meshprep reconstruct POINTS.xyz -o MESH [--resolution NX NY | --vertices N | --spacing H]
 //   [--leaf-size K] [--neighbors N] [--variation-threshold T|pNN] [--variation-growth G]
-//   [--adaptive] [--max-gap G] [--json FILE|-]
+//   [--adaptive] [--max-gap G] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
@@ -25,6 +25,7 @@ struct ReconstructOptions {
   double spacing = 0, max_gap = 0, variation_growth = 1.5;
   bool adaptive = false;
   std::size_t leaf_size = 16, neighbors = 40, vertices = 0;
+  std::size_t threads = 0;
   std::string variation_threshold = "p90";
 };
 
@@ -34,6 +35,7 @@ std::string check_variation_rule(const std::string& text) {
 }
 
 int run_reconstruct(const ReconstructOptions& o) {
+  const ThreadLimit parallelism(o.threads);
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   const PointSet input = read_points(o.input);
@@ -137,6 +139,7 @@ Action add_reconstruct_command(CLI::App& app) {
                   "Leave out triangles farther than this from every sample (0 = 3x the median sample spacing)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results as JSON (- for standard output)");
   return [o] { return run_reconstruct(*o); };
 }

@@ -1,5 +1,5 @@
 // meshprep simplify IN -o OUT (--ratio R | --faces N) [--cost bending|distance|quadric]
-//   [--max-error E] [--min-angle DEG] [--no-polish] [--enhance] [--json FILE|-]
+//   [--max-error E] [--min-angle DEG] [--no-polish] [--enhance] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
@@ -26,6 +26,7 @@ struct SimplifyOptions {
   std::string input, output, json, cost = "bending";
   double ratio = 0, max_error = 0, min_angle = 20;
   std::size_t faces = 0, samples = QualityParams().distance_samples;
+  std::size_t threads = 0;
   bool no_polish = false, enhance = false;
 };
 
@@ -41,6 +42,7 @@ nlohmann::ordered_json input_facts(const TriangleSoup& soup) {
 }
 
 int run_simplify(const SimplifyOptions& o) {
+  const ThreadLimit parallelism(o.threads);
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
@@ -142,6 +144,7 @@ Action add_simplify_command(CLI::App& app) {
                 "enhance; the paper's Figure 6 combination)");
   cmd->add_flag("--no-polish", o->no_polish, "Skip the flips and relaxation that improve the angles, and the fit to the original, after collapsing");
   add_samples_option(*cmd, o->samples);
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_simplify(*o); };
 }

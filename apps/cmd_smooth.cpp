@@ -1,5 +1,5 @@
 // meshprep smooth IN -o OUT [--method rbf|taubin|laplace] [--neighbors 11] [--iterations N]
-//   [--smoothing L] [--feature-angle DEG] [--preserve-volume] [--json FILE|-]
+//   [--smoothing L] [--feature-angle DEG] [--preserve-volume] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
@@ -27,9 +27,11 @@ struct SmoothOptions {
   std::string input, output, json, method = "rbf";
   SmoothParams params;
   std::size_t samples = QualityParams().distance_samples;
+  std::size_t threads = 0;
 };
 
 int run_smooth(SmoothOptions o) {
+  const ThreadLimit parallelism(o.threads);
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   LoadedMesh loaded = load_mesh(o.input);
@@ -129,6 +131,7 @@ Action add_smooth_command(CLI::App& app) {
   cmd->add_flag("--preserve-volume", o->params.preserve_volume,
                 "Closed surfaces: offset the result along its normals so that the enclosed volume is unchanged");
   add_samples_option(*cmd, o->samples);
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_smooth(*o); };
 }

@@ -1,7 +1,7 @@
 // meshprep tetrahedralize SURFACE -o OUT [--radius-edge R] [--min-dihedral DEG]
 //   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary]
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
-//   [--fem-check] [--json FILE|-]
+//   [--fem-check] [--timeout SECONDS] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 
@@ -31,6 +31,7 @@ struct TetOptions {
   double extrude_depth = 0, extrude_relative = 0;
   bool binary = false, fem_check = false;
   unsigned timeout = 0;
+  std::size_t threads = 0;
 };
 
 void progress(const std::string& line) {
@@ -89,6 +90,7 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
 }
 
 int run_tetrahedralize(const TetOptions& o) {
+  const ThreadLimit parallelism(o.threads);
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   ensure_not_input(o.diagnose, o.input);
@@ -181,6 +183,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
   cmd->add_option("--timeout", o->timeout,
                   "Stop TetGen after this many seconds (exit 1, nothing written); Ctrl-C stops it too (exit 130)")
       ->check(CLI::Range(1u, 1000000u));
+  add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results as JSON to FILE ('-' = stdout)");
   return [o] { return run_tetrahedralize(*o); };
 }
