@@ -40,10 +40,29 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
   const double total_area = std::accumulate(areas.begin(), areas.end(), 0.0);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  // Measured in chunks, so that memory does not grow with the sample count (10^6 by default);
+  // the sums run in sample order, as they would over one array.
+  constexpr std::size_t kChunk = 1 << 16;
   std::vector<Vec3> samples;
   std::vector<std::uint32_t> sample_face;
-  samples.reserve(params.samples + n_faces);
-  sample_face.reserve(params.samples + n_faces);
+  samples.reserve(kChunk);
+  sample_face.reserve(kChunk);
+  std::vector<double> face_worst(n_faces, 0.0);
+  std::size_t sampled = 0;
+  double sum = 0, sum_sq = 0;
+  DirectedDistance result;
+  const auto measure_chunk = [&] {
+    const std::vector<double> d = distances_to(to, samples);
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      sum += d[i];
+      sum_sq += d[i] * d[i];
+      result.max = std::max(result.max, d[i]);
+      face_worst[sample_face[i]] = std::max(face_worst[sample_face[i]], d[i]);
+    }
+    sampled += d.size();
+    samples.clear();
+    sample_face.clear();
+  };
   for (std::size_t f = 0; f < n_faces; ++f) {
     const auto count = static_cast<std::size_t>(
         std::floor(static_cast<double>(params.samples) * areas[f] / total_area + uniform(rng)));
@@ -51,19 +70,13 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
       const double r1 = std::sqrt(uniform(rng)), r2 = uniform(rng);  // uniform on the triangle
       samples.push_back(barycentric_point(from, from.triangles[f], r1 * (1 - r2), r1 * r2));
       sample_face.push_back(static_cast<std::uint32_t>(f));
+      if (samples.size() == kChunk) measure_chunk();
     }
   }
-  const std::vector<double> d = distances_to(to, samples);
-  DirectedDistance result;
-  double sum = 0, sum_sq = 0;
-  for (double x : d) {
-    sum += x;
-    sum_sq += x * x;
-    result.max = std::max(result.max, x);
-  }
-  if (!d.empty()) {
-    result.mean = sum / static_cast<double>(d.size());
-    result.rms = std::sqrt(sum_sq / static_cast<double>(d.size()));
+  measure_chunk();
+  if (sampled > 0) {
+    result.mean = sum / static_cast<double>(sampled);
+    result.rms = std::sqrt(sum_sq / static_cast<double>(sampled));
   }
 
   // 2. Every referenced vertex, and 3. a dense grid on the faces with the worst samples:
@@ -74,8 +87,6 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
     for (auto v : t) used[v] = 1;
   for (std::size_t v = 0; v < from.points.size(); ++v)
     if (used[v]) extra.push_back(from.points[v]);
-  std::vector<double> face_worst(n_faces, 0.0);
-  for (std::size_t i = 0; i < d.size(); ++i) face_worst[sample_face[i]] = std::max(face_worst[sample_face[i]], d[i]);
   std::vector<std::uint32_t> order(n_faces);
   std::iota(order.begin(), order.end(), 0u);
   const std::size_t refine = std::min(params.refine_faces, n_faces);
@@ -87,7 +98,7 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
       for (int j = 0; i + j <= g; ++j)
         extra.push_back(barycentric_point(from, from.triangles[order[k]], double(i) / g, double(j) / g));
   for (double x : distances_to(to, extra)) result.max = std::max(result.max, x);
-  result.points = samples.size() + extra.size();
+  result.points = sampled + extra.size();
   return result;
 }
 
