@@ -5,17 +5,20 @@
 # target and fails if any found a crash, a leak, an input slower than 10 s or one needing more than
 # 2 GB; the input is kept in build-fuzz/artifacts/TARGET/ (replay it: build-fuzz/bin/fuzz_TARGET FILE).
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (targets: off obj ply stl xyz config)
+# FUZZ_BUILD_DIR=DIR uses an existing fuzzer build (MESHPREP_BUILD_FUZZERS=ON) instead of build-fuzz/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(off obj ply stl xyz config)
-build=build-fuzz
+build=${FUZZ_BUILD_DIR:-build-fuzz}  # scripts/run-tests.sh points it at its sanitizer build
 
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DMESHPREP_BUILD_FUZZERS=ON \
-  -DMESHPREP_BUILD_TESTS=OFF -DMESHPREP_BUILD_APPS=OFF -DMESHPREP_BUILD_BENCH=OFF -DMESHPREP_BUILD_EXAMPLES=OFF \
-  -DMESHPREP_INSTALL=OFF >/dev/null
+if ! grep -q '^MESHPREP_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DMESHPREP_BUILD_FUZZERS=ON \
+    -DMESHPREP_BUILD_TESTS=OFF -DMESHPREP_BUILD_APPS=OFF -DMESHPREP_BUILD_BENCH=OFF -DMESHPREP_BUILD_EXAMPLES=OFF \
+    -DMESHPREP_INSTALL=OFF >/dev/null
+fi
 cmake --build "$build" -j 2 --target "${targets[@]/#/fuzz_}" >/dev/null
 
 scratch=$(mktemp -d)
