@@ -216,7 +216,8 @@ class Run {
     record.details = {{"target_faces", s.target_faces},
                       {"reached_target", s.reached_target},
                       {"collapses", s.collapses},
-                      {"intersection_retries", s.intersection_retries}};
+                      {"intersection_retries", s.intersection_retries},
+                      {"stuck_restarts", s.stuck_restarts}};
     if (!s.reached_target) record.note = "target " + std::to_string(s.target_faces) + " faces not reached";
     measure(record);
     finish(std::move(record));
