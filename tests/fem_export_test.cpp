@@ -3,11 +3,11 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/export.h"
 #include "tet_test_meshes.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstdint>
@@ -67,18 +67,8 @@ std::vector<std::string> fields_of(const std::string& line, char separator = ' '
 }
 
 // Each test gets a fresh, empty directory that is removed afterwards.
-class FemExportTest : public ::testing::Test {
+class FemExportTest : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    static int counter = 0;
-    dir_ = fs::temp_directory_path() /
-           ("meshprep-fem-export-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   std::set<std::string> directory_entries() const {
     std::set<std::string> names;
@@ -101,8 +91,6 @@ class FemExportTest : public ::testing::Test {
     return python + " " + MESHPREP_READBACK_SCRIPT + " " + dir_.string() + " " + std::to_string(points) + " " +
            std::to_string(tets) + " 1.0";
   }
-
-  fs::path dir_;
 };
 
 TEST_F(FemExportTest, ThirdPartyReadersReadEveryFormat) {

@@ -3,10 +3,9 @@
 // Part of the pipeline's tests because the configuration file is among the fuzzed inputs.
 #include "meshprep/core/errors.h"
 #include "meshprep/pipeline/pipeline_config.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,14 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class FuzzRegression : public ::testing::Test {
+class FuzzRegression : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("meshprep-fuzz-regression-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // Writes `bytes` to the file `name` in the test's folder and returns its path.
   std::string file(const std::string& name, const std::string& bytes) const {
@@ -32,8 +25,6 @@ class FuzzRegression : public ::testing::Test {
     std::ofstream(path, std::ios::binary) << bytes;
     return path;
   }
-
-  fs::path dir_;
 };
 
 // The message of the InvalidInput that reading the configuration file `path` throws ("" if none).

@@ -2,10 +2,9 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,19 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Each test gets a fresh, empty directory that is removed afterwards.
-class IoTest : public ::testing::Test {
+class IoTest : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    static int counter = 0;
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("meshprep-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   // Writes `content` (text or bytes) to a file in the test directory and returns its path.
   std::string file(const std::string& name, const std::string& content) const {
@@ -49,8 +37,6 @@ class IoTest : public ::testing::Test {
     for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
     return names;
   }
-
-  fs::path dir_;
 };
 
 // A tetrahedron with coordinates that are not exact in binary or in float.

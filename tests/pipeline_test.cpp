@@ -5,6 +5,7 @@
 #include "meshprep/core/io.h"
 
 #include "test_meshes.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -18,15 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Pipeline : public ::testing::Test {
+class Pipeline : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("meshprep_pipeline_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   // A terrain z = 0.1 sin(2x) cos(3y) sampled at 1,500 scattered points of [-1, 1]^2.
   std::string terrain_points() const {
@@ -52,8 +46,6 @@ class Pipeline : public ::testing::Test {
     config.quality.params.distance_samples = 20000;
     return config;
   }
-
-  fs::path dir_;
 };
 
 std::vector<std::string> stage_names(const PipelineResult& r) {

@@ -3,10 +3,9 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/quality/report_writers.h"
 #include "meshprep/quality/surface_variation.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -124,18 +123,9 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 // A fresh directory per test, removed afterwards.
-class ReportFiles : public ::testing::Test {
+class ReportFiles : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("meshprep_report_writers_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
+  std::string file(const std::string& name) const { return path(name); }
 };
 
 // ---- JSON ------------------------------------------------------------------------------------
