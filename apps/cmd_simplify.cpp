@@ -91,6 +91,7 @@ int run_simplify(const SimplifyOptions& o) {
                       {"max_error", result.rejected_error}};
   json["energy_evaluations"] = result.energy_evaluations;
   json["intersection_retries"] = result.intersection_retries;
+  json["reshapes"] = result.reshapes;
   json["stuck_restarts"] = result.stuck_restarts;
   json["polish"] = {{"flips", result.polish_flips}, {"moves", result.polish_moves}, {"fit_moves", result.fit_moves}};
   if (o.enhance)

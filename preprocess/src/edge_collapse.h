@@ -26,12 +26,15 @@ CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost);
 /// quadric's RMS plane distance above `error_cap[v]` (nor above params.max_error); non-manifold
 /// vertices never move. `merged_into[v]` is set to the vertex v was collapsed into (entries of
 /// vertices that stay are left alone). The mesh is not garbage-collected. Fills the counters of
-/// `result` (collapses, rejections, energy evaluations). If no edge may go before the target,
-/// `when_stuck` (if given) is called: when it returns true (it changed the mesh) every edge is
-/// queued again, a few times at most and only while the restarts still collapse something.
+/// `result` (collapses, rejections, energy evaluations). `reshape` (if given) is called each
+/// time the face count halves (Reshape::Relax) and when no edge may go before the target
+/// (Reshape::FlipAndRelax); when it returns true (it changed the mesh) every edge is queued
+/// again; a stuck queue is restarted a few times at most and only while that still collapses
+/// something.
+enum class Reshape { Relax, FlipAndRelax };
+using ReshapeCallback = std::function<bool(Reshape)>;
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
                     std::vector<Quadric>& quadrics, const std::vector<double>& error_cap,
-                    std::vector<int>& merged_into, SimplifyResult& result,
-                    const std::function<bool()>& when_stuck = {});
+                    std::vector<int>& merged_into, SimplifyResult& result, const ReshapeCallback& reshape = {});
 
 }  // namespace meshprep::detail

@@ -101,9 +101,9 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
 
 }  // namespace
 
-PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance) {
+PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, bool flips) {
   PolishCounts counts;
-  counts.flips = flip_sweep(mesh, tolerance);
+  if (flips) counts.flips = flip_sweep(mesh, tolerance);
   counts.moves = relax_sweep(mesh, quadrics, tolerance);
   return counts;
 }

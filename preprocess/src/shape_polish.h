@@ -22,7 +22,7 @@ struct PolishCounts {
 /// of its 1-ring over that of a 30-degree crease) to its 1-ring centroid in its tangent plane, then
 /// along its normal to the minimum of its quadric, kept only if the smallest angle around it
 /// improves, no face turns by more than 60 degrees, and the quadric's RMS plane distance stays
-/// under `tolerance` (or does not grow).
-PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance);
+/// under `tolerance` (or does not grow). Without `flips`, only (2).
+PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, bool flips = true);
 
 }  // namespace meshprep::detail

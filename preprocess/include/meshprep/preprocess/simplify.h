@@ -75,6 +75,7 @@ struct SimplifyResult {
   std::size_t polish_flips = 0, polish_moves = 0;  ///< shape polish: edge flips, relaxation moves
   std::size_t fit_moves = 0;                        ///< least-squares fit to the original: vertex moves
   std::size_t intersection_retries = 0;  ///< restarts with a tighter error cap where the output crossed itself
+  std::size_t reshapes = 0;  ///< relaxation sweeps between collapses (each time the face count halved)
   std::size_t stuck_restarts = 0;  ///< queue restarts after flips and relaxation freed collapses the shape guard refused
   std::size_t enhance_stages = 0, enhance_rounds = 0, enhance_flips = 0, enhance_removed_vertices = 0;
 };
