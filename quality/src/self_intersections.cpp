@@ -5,7 +5,7 @@
 
 #include "robust_predicates.h"
 
-#include <tbb/parallel_for.h>
+#include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
 
@@ -64,29 +64,23 @@ SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t 
   std::vector<char> valid(n);
   for (std::size_t f = 0; f < n; ++f) valid[f] = has_area(soup, soup.triangles[f]) ? 1 : 0;
   const TriangleBvh bvh(soup);
-  std::vector<std::vector<std::size_t>> partners(n);  // partners[i]: faces j > i meeting face i
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      if (!valid[i]) continue;
-      Box3 box;
-      box.setEmpty();
-      for (auto v : soup.triangles[i]) box.extend(soup.points[v]);
-      bvh.for_each_overlapping(box, [&](std::size_t j) {
-        if (j > i && valid[j] && faces_intersect(soup, soup.triangles[i], soup.triangles[j])) partners[i].push_back(j);
-      });
-      std::sort(partners[i].begin(), partners[i].end());
-    }
+  // Each thread keeps the pairs it found; sorted together afterwards, whatever the threads did.
+  tbb::enumerable_thread_specific<std::vector<std::pair<std::size_t, std::size_t>>> found;
+  bvh.for_each_overlapping_pair([&](std::size_t i, std::size_t j) {
+    if (valid[i] && valid[j] && faces_intersect(soup, soup.triangles[i], soup.triangles[j])) found.local().emplace_back(i, j);
   });
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
+  std::sort(pairs.begin(), pairs.end());
   SelfIntersections result;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j : partners[i]) {
-      if (cap > 0 && result.count == cap) {
-        result.capped = true;
-        return result;
-      }
-      ++result.count;
-      result.pairs.emplace_back(i, j);
+  for (const auto& pair : pairs) {
+    if (cap > 0 && result.count == cap) {
+      result.capped = true;
+      return result;
     }
+    ++result.count;
+    result.pairs.push_back(pair);
+  }
   return result;
 }
 

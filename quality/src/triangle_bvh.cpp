@@ -1,5 +1,7 @@
 #include "meshprep/quality/triangle_bvh.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -8,6 +10,7 @@ namespace {
 
 constexpr std::uint32_t kLeafSize = 4;
 constexpr int kMaxDepth = 64;  // median splits: depth is log2(n / kLeafSize) + 1
+constexpr int kParallelDepth = 10;  // node pairs this deep in the self-traversal still fork
 
 }  // namespace
 
@@ -140,6 +143,52 @@ void TriangleBvh::for_each_overlapping(const Box3& box, const std::function<void
     stack[top++] = node.left;
     stack[top++] = node.right;
   }
+}
+
+void TriangleBvh::for_each_overlapping_pair(const std::function<void(std::size_t, std::size_t)>& visit) const {
+  if (!nodes_.empty()) overlapping_pairs(0, 0, 0, visit);
+}
+
+// The pairs of node a and node b (a == b: the pairs within one node). Node pairs whose boxes are
+// apart are dropped whole; the larger node is split first.
+void TriangleBvh::overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
+                                    const std::function<void(std::size_t, std::size_t)>& visit) const {
+  const Node& x = nodes_[a];
+  const Node& y = nodes_[b];
+  auto both = [&](auto first, auto second) {
+    if (depth < kParallelDepth) tbb::parallel_invoke(first, second);
+    else {
+      first();
+      second();
+    }
+  };
+  if (a == b) {
+    if (x.count > 0) {
+      for (std::uint32_t i = x.first; i < x.first + x.count; ++i)
+        for (std::uint32_t j = i + 1; j < x.first + x.count; ++j)
+          if (boxes_[order_[i]].intersects(boxes_[order_[j]])) visit(std::min(order_[i], order_[j]), std::max(order_[i], order_[j]));
+      return;
+    }
+    both([&] { overlapping_pairs(x.left, x.left, depth + 1, visit); },
+         [&] {
+           overlapping_pairs(x.right, x.right, depth + 1, visit);
+           overlapping_pairs(x.left, x.right, depth + 1, visit);
+         });
+    return;
+  }
+  if (!x.box.intersects(y.box)) return;
+  if (x.count > 0 && y.count > 0) {
+    for (std::uint32_t i = x.first; i < x.first + x.count; ++i)
+      for (std::uint32_t j = y.first; j < y.first + y.count; ++j)
+        if (boxes_[order_[i]].intersects(boxes_[order_[j]])) visit(std::min(order_[i], order_[j]), std::max(order_[i], order_[j]));
+    return;
+  }
+  // Split the node that is not a leaf, the larger (by box volume) if neither is.
+  const bool split_x = y.count > 0 || (x.count == 0 && x.box.volume() >= y.box.volume());
+  if (split_x)
+    both([&] { overlapping_pairs(x.left, b, depth + 1, visit); }, [&] { overlapping_pairs(x.right, b, depth + 1, visit); });
+  else
+    both([&] { overlapping_pairs(a, y.left, depth + 1, visit); }, [&] { overlapping_pairs(a, y.right, depth + 1, visit); });
 }
 
 }  // namespace meshprep

@@ -37,6 +37,12 @@ class TriangleBvh {
   /// Calls `visit(face)` for every triangle whose box overlaps `box`.
   void for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const;
 
+  /// Calls `visit(i, j)` once for every pair of triangles i < j whose boxes overlap: the hierarchy
+  /// traversed against itself (pairs of nodes, not a query from the root per triangle: several
+  /// times fewer box tests). Runs in parallel: `visit` must be thread-safe, and the order of the
+  /// calls is unspecified.
+  void for_each_overlapping_pair(const std::function<void(std::size_t, std::size_t)>& visit) const;
+
   const TriangleSoup& soup() const { return soup_; }
 
  private:
@@ -47,6 +53,8 @@ class TriangleBvh {
     std::uint32_t left = 0, right = 0;  ///< inner node: children
   };
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids);
+  void overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
+                         const std::function<void(std::size_t, std::size_t)>& visit) const;
 
   const TriangleSoup& soup_;
   std::vector<Box3> boxes_;           ///< per triangle
