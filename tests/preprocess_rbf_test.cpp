@@ -190,6 +190,52 @@ TEST(HeightMapSpline, SmoothingSplineKeepsQuadricsAndStopsInterpolatingNoise) {
   EXPECT_THROW(HeightMapSpline(sites, noisy, HeightMapPolynomial::quadratic, -1.0), InvalidInput);
 }
 
+TEST(HeightMapSpline, CubicPolynomialReproducesACubicWhateverTheWeights) {
+  const std::vector<Eigen::Vector2d> sites = scattered_sites(30);
+  auto cubic = [](double x, double y) {
+    return 0.2 - x + 0.5 * y + 0.7 * x * x - 0.3 * x * y + 1.1 * y * y + 0.4 * x * x * x - 0.9 * x * x * y + 0.2 * x * y * y - 0.6 * y * y * y;
+  };
+  Eigen::VectorXd heights(30), weights(30);
+  for (Eigen::Index i = 0; i < 30; ++i) {
+    heights[i] = cubic(sites[static_cast<std::size_t>(i)].x(), sites[static_cast<std::size_t>(i)].y());
+    weights[i] = 0.1 + static_cast<double>(i % 7);  // any positive weights
+  }
+  for (const double lambda : {0.0, 1.0, std::numeric_limits<double>::infinity()})
+    for (const bool weighted : {false, true}) {
+      const HeightMapSpline spline(sites, heights, HeightMapPolynomial::cubic, lambda, weighted ? weights : Eigen::VectorXd());
+      EXPECT_NEAR(spline.evaluate(0.3, -0.4), cubic(0.3, -0.4), 1e-10) << lambda << " " << weighted;
+    }
+  // The quadratic polynomial cannot follow it: its least-squares fit misses.
+  const HeightMapSpline quadratic(sites, heights, HeightMapPolynomial::quadratic, std::numeric_limits<double>::infinity());
+  EXPECT_GT(std::abs(quadratic.evaluate(0.3, -0.4) - cubic(0.3, -0.4)), 1e-3);
+}
+
+TEST(HeightMapSpline, AWeightCountsAsThatManyCopiesOfItsSite) {
+  // sum_j w_j r_j^2 with w_j = 2 is the sum with site j listed twice: the least-squares limits agree.
+  const std::vector<Eigen::Vector2d> sites = scattered_sites(16);
+  Eigen::VectorXd heights(16), weights = Eigen::VectorXd::Ones(16);
+  for (Eigen::Index i = 0; i < 16; ++i) heights[i] = std::sin(3 * sites[static_cast<std::size_t>(i)].x()) + (i % 3) * 0.1;
+  std::vector<Eigen::Vector2d> doubled = sites;
+  Eigen::VectorXd doubled_heights(20);
+  doubled_heights.head(16) = heights;
+  for (int i = 0; i < 4; ++i) {
+    weights[i] = 2;
+    doubled.push_back(sites[static_cast<std::size_t>(i)]);
+    doubled_heights[16 + i] = heights[i];
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  const HeightMapSpline weighted(sites, heights, HeightMapPolynomial::cubic, inf, weights);
+  const HeightMapSpline copies(doubled, doubled_heights, HeightMapPolynomial::cubic, inf);
+  const HeightMapSpline plain(sites, heights, HeightMapPolynomial::cubic, inf);
+  EXPECT_NEAR(weighted.evaluate(0.1, 0.2), copies.evaluate(0.1, 0.2), 1e-12);
+  EXPECT_GT(std::abs(weighted.evaluate(0.1, 0.2) - plain.evaluate(0.1, 0.2)), 1e-4);  // the weights matter
+  EXPECT_THROW(HeightMapSpline(sites, heights, HeightMapPolynomial::cubic, inf, Eigen::VectorXd::Ones(15)), InvalidInput);
+  weights[0] = 0;
+  EXPECT_THROW(HeightMapSpline(sites, heights, HeightMapPolynomial::cubic, 1.0, weights), InvalidInput);
+  weights[0] = std::nan("");
+  EXPECT_THROW(HeightMapSpline(sites, heights, HeightMapPolynomial::cubic, inf, weights), InvalidInput);
+}
+
 TEST(HeightMapSpline, EnergyIsTheThinPlateIntegral) {
   // J = integral over R^2 of z_xx^2 + 2 z_xy^2 + z_yy^2, by finite differences on a grid that is
   // fine near the sites and coarse far away (the integrand decays as 1/r^4).
@@ -222,6 +268,10 @@ TEST(HeightMapSpline, RefusesDegenerateSites) {
   std::vector<Eigen::Vector2d> circle;
   for (int i = 0; i < 8; ++i) circle.emplace_back(std::cos(i * M_PI / 4), std::sin(i * M_PI / 4));
   EXPECT_THROW(HeightMapSpline(circle, Eigen::VectorXd::Zero(8), HeightMapPolynomial::quadratic), InvalidInput);
+  // Sites on one conic are on one cubic curve too (the conic times any line); 16 of them.
+  for (int i = 8; i < 16; ++i) circle.emplace_back(std::cos(i * M_PI / 8 + 0.1), std::sin(i * M_PI / 8 + 0.1));
+  for (const double lambda : {0.0, std::numeric_limits<double>::infinity()})
+    EXPECT_THROW(HeightMapSpline(circle, Eigen::VectorXd::Zero(16), HeightMapPolynomial::cubic, lambda), InvalidInput);
 }
 
 // --- DuchonSpline ---------------------------------------------------------------------------

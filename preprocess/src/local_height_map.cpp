@@ -4,7 +4,7 @@ namespace meshprep {
 namespace {
 
 HeightMapSpline height_map_in(const LocalFrame& frame, const std::vector<Vec3>& neighbours,
-                              HeightMapPolynomial polynomial, double smoothing) {
+                              HeightMapPolynomial polynomial, double smoothing, const Eigen::VectorXd& weights) {
   std::vector<Eigen::Vector2d> sites;
   sites.reserve(neighbours.size());
   Eigen::VectorXd heights(static_cast<Eigen::Index>(neighbours.size()));
@@ -13,13 +13,14 @@ HeightMapSpline height_map_in(const LocalFrame& frame, const std::vector<Vec3>& 
     sites.emplace_back(local.x(), local.y());
     heights[static_cast<Eigen::Index>(j)] = local.z();
   }
-  return HeightMapSpline(sites, heights, polynomial, smoothing);
+  return HeightMapSpline(sites, heights, polynomial, smoothing, weights);
 }
 
 }  // namespace
 
-LocalHeightMap::LocalHeightMap(const std::vector<Vec3>& neighbours, HeightMapPolynomial polynomial, double smoothing)
-    : frame_(pca_frame(neighbours)), spline_(height_map_in(frame_, neighbours, polynomial, smoothing)) {}
+LocalHeightMap::LocalHeightMap(const std::vector<Vec3>& neighbours, HeightMapPolynomial polynomial, double smoothing,
+                               const Eigen::VectorXd& weights)
+    : frame_(pca_frame(neighbours)), spline_(height_map_in(frame_, neighbours, polynomial, smoothing, weights)) {}
 
 Vec3 LocalHeightMap::project(const Vec3& x) const {
   Vec3 local = frame_.to_local(x);

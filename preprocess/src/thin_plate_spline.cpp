@@ -77,14 +77,34 @@ MatrixXd volume_polynomial_matrix(const Eigen::Matrix3Xd& q) {
   return b;
 }
 
-// 1, x, y, x^2, xy, y^2: the first 3 (linear) or all 6 (quadratic) span a height map's polynomial.
-Eigen::Matrix<double, 6, 1> monomials(const Eigen::Vector2d& q) {
-  Eigen::Matrix<double, 6, 1> m;
-  m << 1.0, q.x(), q.y(), q.x() * q.x(), q.x() * q.y(), q.y() * q.y();
+// 1, x, y, x^2, xy, y^2, x^3, x^2 y, x y^2, y^3: the first 3 (linear), 6 (quadratic) or all 10
+// (cubic) span a height map's polynomial.
+Eigen::Matrix<double, 10, 1> monomials(const Eigen::Vector2d& q) {
+  const double x = q.x(), y = q.y();
+  Eigen::Matrix<double, 10, 1> m;
+  m << 1.0, x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
   return m;
 }
 
-Index term_count(HeightMapPolynomial polynomial) { return polynomial == HeightMapPolynomial::linear ? 3 : 6; }
+// The polynomial with these coefficients (3, 6 or 10 of them, in the order of monomials) at q.
+double polynomial_at(const Eigen::Vector2d& q, const VectorXd& coefficients) {
+  const double x = q.x(), y = q.y();
+  double value = coefficients[0] + coefficients[1] * x + coefficients[2] * y;
+  if (coefficients.size() > 3)
+    value += coefficients[3] * x * x + coefficients[4] * x * y + coefficients[5] * y * y;
+  if (coefficients.size() > 6)
+    value += x * (x * (coefficients[6] * x + coefficients[7] * y) + coefficients[8] * y * y) + coefficients[9] * y * y * y;
+  return value;
+}
+
+Index term_count(HeightMapPolynomial polynomial) {
+  switch (polynomial) {
+    case HeightMapPolynomial::linear: return 3;
+    case HeightMapPolynomial::quadratic: return 6;
+    case HeightMapPolynomial::cubic: return 10;
+  }
+  return 3;
+}
 
 MatrixXd height_map_polynomial_matrix(const Eigen::Matrix2Xd& q, Index terms) {
   MatrixXd b(q.cols(), terms);
@@ -170,7 +190,45 @@ UnitCentres<2> height_map_sites(const std::vector<Eigen::Vector2d>& sites, const
 }
 
 const char* height_map_degeneracy(HeightMapPolynomial polynomial) {
-  return polynomial == HeightMapPolynomial::linear ? "collinear" : "on one conic";
+  switch (polynomial) {
+    case HeightMapPolynomial::linear: return "collinear";
+    case HeightMapPolynomial::quadratic: return "on one conic";
+    case HeightMapPolynomial::cubic: return "on one cubic curve";
+  }
+  return "degenerate";
+}
+
+// The polynomial (`terms` monomials) minimising sum_j w_j (p(q_j) - h_j)^2 over unit-size sites,
+// by its normal equations: a terms x terms system in fixed-size storage, built in one pass over
+// the sites (the smoothing fits one per vertex, and a QR of the n x terms matrix costs 4x as
+// much). On unit-size sites the monomials are O(1), so squaring the condition number costs
+// nothing that matters; sites (nearly) on one curve of the polynomial's degree leave a pivot under
+// 1e-12 of the largest: no coefficients (size 0).
+VectorXd least_squares_polynomial(const Eigen::Matrix2Xd& q, const VectorXd& h, const VectorXd& weights, Index terms) {
+  using Normal = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 10, 10>;
+  Eigen::Matrix<double, 10, 10> all = Eigen::Matrix<double, 10, 10>::Zero();  // of every monomial: fixed size, vectorised
+  Eigen::Matrix<double, 10, 1> right = Eigen::Matrix<double, 10, 1>::Zero();
+  for (Index j = 0; j < q.cols(); ++j) {
+    const Eigen::Matrix<double, 10, 1> m = monomials(q.col(j));
+    const Eigen::Matrix<double, 10, 1> weighted = (weights.size() > 0 ? weights[j] : 1.0) * m;
+    all.noalias() += weighted * m.transpose();
+    right += h[j] * weighted;
+  }
+  const Normal normal = all.topLeftCorner(terms, terms);
+  const Eigen::LDLT<Normal, Eigen::Lower> ldlt(normal);
+  const auto pivots = ldlt.vectorD().cwiseAbs();
+  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff())) return VectorXd();
+  return ldlt.solve(right.head(terms));
+}
+
+// Site weights: none (all 1) or one finite positive weight per site.
+void check_weights(const VectorXd& weights, std::size_t sites, const char* who) {
+  if (weights.size() == 0) return;
+  if (static_cast<std::size_t>(weights.size()) != sites)
+    throw InvalidInput(std::string(who) + ": " + std::to_string(weights.size()) + " weights for " +
+                       std::to_string(sites) + " sites");
+  if (!weights.allFinite() || !(weights.minCoeff() > 0))
+    throw InvalidInput(std::string(who) + ": the weights must be finite and positive");
 }
 
 // The volume spline's system on unit-size centres; coplanar centres (rank 3) are accepted.
@@ -210,23 +268,25 @@ Eigen::MatrixXd volume_spline_energy_matrix(const std::vector<Vec3>& centres) {
 }
 
 HeightMapSpline::HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
-                                 HeightMapPolynomial polynomial, double smoothing) {
+                                 HeightMapPolynomial polynomial, double smoothing, const Eigen::VectorXd& weights) {
   constexpr const char* who = "HeightMapSpline";
   if (!(smoothing >= 0)) throw InvalidInput(std::string(who) + ": smoothing must be >= 0");
+  check_weights(weights, sites.size(), who);
   UnitCentres<2> unit = height_map_sites(sites, heights, polynomial, who);
   centre_ = unit.centre;
   scale_ = unit.scale;
-  if (std::isinf(smoothing)) {  // the limit: the least-squares polynomial, no kernel part
-    const Index terms = term_count(polynomial);
-    Eigen::CompleteOrthogonalDecomposition<MatrixXd> fit(height_map_polynomial_matrix(unit.points, terms));
-    fit.setThreshold(kRankThreshold);
-    if (fit.rank() < terms) throw InvalidInput(std::string(who) + ": the points are " + height_map_degeneracy(polynomial));
-    polynomial_ = fit.solve(heights);
+  if (std::isinf(smoothing)) {  // the limit: the (weighted) least-squares polynomial, no kernel part
+    polynomial_ = least_squares_polynomial(unit.points, heights, weights, term_count(polynomial));
+    if (polynomial_.size() == 0) throw InvalidInput(std::string(who) + ": the points are " + height_map_degeneracy(polynomial));
     scaled_sites_.resize(2, 0);
     return;
   }
   MatrixXd kernel = kernel_matrix(unit.points, thin_plate_kernel, who);
-  kernel.diagonal().array() += smoothing;
+  // sum_j w_j (z(S_j) - z_j)^2 + lambda/(8 pi) J(z): the site's own smoothing is lambda / w_j.
+  if (weights.size() > 0)
+    kernel.diagonal().array() += smoothing / weights.array();
+  else
+    kernel.diagonal().array() += smoothing;
   const Index terms = term_count(polynomial);
   const BorderedSystem system(std::move(kernel), height_map_polynomial_matrix(unit.points, terms), 1.0, terms,
                               height_map_degeneracy(polynomial), who);
@@ -243,7 +303,7 @@ double HeightMapSpline::evaluate(double x, double y) const {
   double kernel_part = 0;
   for (Index j = 0; j < scaled_sites_.cols(); ++j)
     kernel_part += gamma_[j] * thin_plate_kernel((scaled_sites_.col(j) - q).squaredNorm());
-  return kernel_part + monomials(q).head(polynomial_.size()).dot(polynomial_);
+  return kernel_part + polynomial_at(q, polynomial_);
 }
 
 DuchonSpline::DuchonSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
@@ -267,7 +327,7 @@ DuchonSpline::DuchonSpline(const std::vector<Eigen::Vector2d>& sites, const Eige
 double DuchonSpline::evaluate(double x, double y) const {
   const Eigen::Vector2d q = (Eigen::Vector2d(x, y) - centre_) / scale_;
   const auto squared = (site_x_ - q.x()).square() + (site_y_ - q.y()).square();
-  return (gamma_ * squared * squared.sqrt().sqrt()).sum() + monomials(q).head(polynomial_.size()).dot(polynomial_);
+  return (gamma_ * squared * squared.sqrt().sqrt()).sum() + polynomial_at(q, polynomial_);
 }
 
 }  // namespace meshprep

@@ -28,10 +28,12 @@ namespace meshprep {
 /// Steps 1-3 above for a neighbourhood: its frame and height map, to project any point (step 4-5).
 class LocalHeightMap {
  public:
-  /// \throws InvalidInput as HeightMapSpline on the neighbours' local (x, y). `smoothing`: see
-  ///         HeightMapSpline (0 interpolates the neighbours).
+  /// \throws InvalidInput as HeightMapSpline on the neighbours' local (x, y). `smoothing` and
+  ///         `weights` (one per neighbour, or none): see HeightMapSpline (smoothing 0 interpolates
+  ///         the neighbours). The frame is the unweighted PCA frame of the neighbours.
   explicit LocalHeightMap(const std::vector<Vec3>& neighbours,
-                          HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0);
+                          HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0,
+                          const Eigen::VectorXd& weights = Eigen::VectorXd());
   /// x moved along the frame normal onto the height map.
   Vec3 project(const Vec3& x) const;
   const LocalFrame& frame() const { return frame_; }

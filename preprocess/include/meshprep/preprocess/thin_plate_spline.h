@@ -76,6 +76,10 @@ enum class HeightMapPolynomial {
   /// O(h^3) error. Needs 6 sites, not on one conic: use it with two rings or more (the sites of a
   /// single regular 1-ring lie close to a circle, where the quadratic part is ill-determined).
   quadratic,
+  /// adds the four cubic monomials: reproduces cubic height maps. Needs 10 sites, not on one cubic
+  /// curve (three rings or more). Its odd terms let a one-sided neighbourhood (beside a crease)
+  /// follow the surface's change of curvature.
+  cubic,
 };
 
 /// The thin-plate spline of a height map: z(x, y) = sum_j gamma_j phi(|(x, y) - S_j|) + p(x, y)
@@ -85,16 +89,19 @@ enum class HeightMapPolynomial {
 class HeightMapSpline {
  public:
   /// `smoothing` lambda >= 0 makes it the thin-plate smoothing spline (Wahba): instead of
-  /// interpolating it minimises sum_j (z(S_j) - z_j)^2 + lambda/(8 pi) J(z) in the unit-scaled
-  /// coordinates, i.e. solves (A + lambda I) gamma + B v = h; lambda -> infinity tends to the least
-  /// squares polynomial, which lambda = infinity gives directly (no kernel part, energy 0).
-  /// Planes (quadrics, with the quadratic polynomial) are still reproduced exactly, whatever
-  /// lambda. bending_energy() then includes lambda |gamma|^2.
-  /// \throws InvalidInput if there are fewer sites than polynomial terms, heights.size() differs,
-  ///         a value is not finite, two sites coincide, or the sites are collinear (linear) or on
-  ///         one conic (quadratic).
+  /// interpolating it minimises sum_j w_j (z(S_j) - z_j)^2 + lambda/(8 pi) J(z) in the unit-scaled
+  /// coordinates, i.e. solves (A + lambda W^-1) gamma + B v = h; lambda -> infinity tends to the
+  /// weighted least-squares polynomial, which lambda = infinity gives directly (no kernel part,
+  /// energy 0). `weights` w_j > 0, one per site, default all 1. Planes (quadrics, cubics, with
+  /// the quadratic or cubic polynomial) are still reproduced exactly, whatever lambda and the
+  /// weights. bending_energy() then includes lambda |gamma|^2 (weighted).
+  /// \throws InvalidInput if there are fewer sites than polynomial terms, heights.size() or
+  ///         weights.size() differs, a value or weight is not finite, a weight is not positive, two
+  ///         sites coincide (finite lambda), or the sites are collinear (linear), on one conic
+  ///         (quadratic) or on one cubic curve (cubic).
   HeightMapSpline(const std::vector<Eigen::Vector2d>& sites, const Eigen::VectorXd& heights,
-                  HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0);
+                  HeightMapPolynomial polynomial = HeightMapPolynomial::linear, double smoothing = 0,
+                  const Eigen::VectorXd& weights = Eigen::VectorXd());
 
   double evaluate(double x, double y) const;
   /// 8 pi gamma^T A gamma >= 0. With the linear polynomial this is the thin-plate energy
@@ -108,7 +115,7 @@ class HeightMapSpline {
   double scale_ = 1;
   Eigen::Matrix2Xd scaled_sites_;
   Eigen::VectorXd gamma_;
-  Eigen::VectorXd polynomial_;  // coefficients of 1, x, y[, x^2, xy, y^2] in the scaled coordinates
+  Eigen::VectorXd polynomial_;  // coefficients of 1, x, y[, x^2, xy, y^2[, x^3, x^2 y, x y^2, y^3]], scaled coordinates
   double bending_energy_ = 0;
 };
 
