@@ -1,5 +1,6 @@
-// meshprep smooth IN -o OUT [--method rbf|taubin|laplace] [--neighbors 11] [--iterations N]
-//   [--smoothing L] [--feature-angle DEG] [--preserve-volume] [--threads N] [--json FILE|-]
+// meshprep smooth IN -o OUT [--method rbf|taubin|laplace] [--neighbors N] [--iterations N]
+//   [--smoothing L|inf] [--relaxation F] [--feature-angle DEG] [--preserve-volume] [--threads N]
+//   [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
@@ -13,6 +14,7 @@
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"
 
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -63,8 +65,10 @@ int run_smooth(SmoothOptions o) {
   json["iterations"] = result.iterations;
   if (o.params.method == SmoothMethod::Rbf) {
     json["neighbors"] = o.params.neighbors;
-    json["smoothing"] = o.params.smoothing;
+    json["smoothing"] = std::isinf(o.params.smoothing) ? nlohmann::ordered_json("inf") : nlohmann::ordered_json(o.params.smoothing);
+    json["relaxation"] = o.params.relaxation;
     json["feature_angle_deg"] = o.params.feature_angle_deg;
+    json["noise_crease_vertices"] = result.noise_crease_vertices;
     json["vertices_kept"] = {{"corners", result.corner_vertices},
                              {"boundary", result.boundary_vertices},
                              {"unfitted", result.unfitted_vertices},
@@ -110,10 +114,11 @@ Action add_smooth_command(CLI::App& app) {
       ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
       ->capture_default_str();
   cmd->add_option("--neighbors", o->params.neighbors, "rbf: neighbours of each vertex's local surface")
-      ->check(CLI::Range(std::size_t(8), std::size_t(200)))
+      ->check(CLI::Range(std::size_t(13), std::size_t(200)))
       ->capture_default_str();
   cmd->add_option("--smoothing", o->params.smoothing,
-                  "rbf: lambda of the thin-plate smoothing spline (0 interpolates the neighbours)")
+                  "rbf: lambda of the weighted thin-plate smoothing spline; inf, its limit, is the weighted "
+                  "least-squares cubic (0 interpolates the neighbours)")
       ->check(CLI::Validator(
           [](std::string& value) {
             try {
@@ -123,6 +128,11 @@ Action add_smooth_command(CLI::App& app) {
             }
           },
           "L|inf"))
+      ->capture_default_str();
+  cmd->add_option("--relaxation", o->params.relaxation,
+                  "rbf: how far each vertex goes towards its 1-ring's centroid before it is put on its local "
+                  "surface (evens out the triangles; 0 = along the normal only)")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--feature-angle", o->params.feature_angle_deg,
                   "rbf: edges with a larger dihedral angle (degrees) are creases, kept sharp; 180 = none")

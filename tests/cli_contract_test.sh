@@ -212,7 +212,8 @@ PY
 check "smooth" 0 $?
 python3 -c "
 import json; j = json.load(open('out/smooth.json'))
-assert j['method'] == 'rbf' and j['iterations'] == 2 and j['neighbors'] == 40, j
+assert j['method'] == 'rbf' and j['iterations'] == 1 and j['neighbors'] == 80, j
+assert j['smoothing'] == 'inf' and j['relaxation'] == 0.5, j
 assert abs(j['volume_change_relative']) < 1e-8 and j['quality']['self_intersections'] == 0, j
 assert j['quality']['closed'] and j['max_displacement'] > 0, j" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: smooth json"; }

@@ -70,6 +70,21 @@ Key number(const char* section, const char* name, double& field, double lo, doub
           [&field] { return OrderedJson(field); }};
 }
 
+// A number >= 0, or "inf" (JSON has no infinity), written back the same way.
+Key number_or_inf(const char* section, const char* name, double& field, std::string description) {
+  const std::string type = "number in [0, inf) or \"inf\"";
+  return {section, name, type, std::move(description),
+          [&field, type](const Json& v) {
+            if (v.is_string() && v.get<std::string>() == "inf") {
+              field = INFINITY;
+              return;
+            }
+            if (!v.is_number() || !(v.get<double>() >= 0)) throw BadValue{"expected a " + type + ", not " + shown(v)};
+            field = v.get<double>();
+          },
+          [&field] { return std::isinf(field) ? OrderedJson("inf") : OrderedJson(field); }};
+}
+
 Key count(const char* section, const char* name, std::size_t& field, std::size_t lo, std::size_t hi,
           std::string description) {
   const std::string type = "integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
@@ -198,9 +213,12 @@ std::vector<Key> smooth_keys(PipelineConfig::Smooth& s) {
                                        {"laplace", SmoothMethod::Laplace}},
                                       "rbf (the paper's) or the taubin and laplace baselines"));
   keys.push_back(count("smooth", "iterations", p.iterations, 1, 1000, "smoothing iterations"));
-  keys.push_back(count("smooth", "neighbors", p.neighbors, 8, 200, "rbf: neighbours of each vertex's local surface"));
-  keys.push_back(number("smooth", "smoothing", p.smoothing, 0, INFINITY, false,
-                        "rbf: lambda of the thin-plate smoothing spline; 0 interpolates"));
+  keys.push_back(count("smooth", "neighbors", p.neighbors, 13, 200, "rbf: neighbours of each vertex's local surface"));
+  keys.push_back(number_or_inf("smooth", "smoothing", p.smoothing,
+                               "rbf: lambda of the weighted thin-plate smoothing spline; inf = the weighted "
+                               "least-squares cubic; 0 interpolates"));
+  keys.push_back(number("smooth", "relaxation", p.relaxation, 0, 1, false,
+                        "rbf: how far each vertex goes towards its 1-ring's centroid before it is put on its surface"));
   keys.push_back(number("smooth", "feature_angle_deg", p.feature_angle_deg, 1, 180, false,
                         "rbf: edges with a larger dihedral angle are creases, kept sharp; 180 = none"));
   keys.push_back(flag("smooth", "preserve_volume", p.preserve_volume, "closed surfaces keep their volume"));

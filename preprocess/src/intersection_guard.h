@@ -4,6 +4,7 @@
 #include "meshprep/core/mesh.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace meshprep::detail {
@@ -12,5 +13,10 @@ namespace meshprep::detail {
 /// to `before`, until no new pair is left (at most 8 rounds). `mesh` must have no deleted
 /// elements (its soup keeps the vertex and face numbering). Returns the number of vertices put back.
 std::size_t undo_new_intersections(TriMesh& mesh, const std::vector<TriMesh::Point>& before, std::size_t allowed);
+
+/// As above, with the allowed count asked for only when the surface crosses itself at all (a
+/// full check of the input saved whenever the moves leave none).
+std::size_t undo_new_intersections(TriMesh& mesh, const std::vector<TriMesh::Point>& before,
+                                   const std::function<std::size_t()>& allowed);
 
 }  // namespace meshprep::detail

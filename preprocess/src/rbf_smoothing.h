@@ -9,7 +9,7 @@
 namespace meshprep {
 
 struct RbfIterationCounts {
-  std::size_t feature_line = 0, corners = 0, boundary = 0, unfitted = 0;
+  std::size_t feature_line = 0, corners = 0, boundary = 0, unfitted = 0, noise_creases = 0;
 };
 
 /// The new position of every vertex (indexed by vertex index); `mesh` is not changed.

@@ -46,10 +46,11 @@ void restore_volume(TriMesh& mesh, double target) {
 }  // namespace
 
 SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
-  if (params.method == SmoothMethod::Rbf && params.neighbors < 8)
-    throw InvalidInput("smooth: at least 8 neighbours are needed (the local quadratic height map has 6 terms)");
-  if (!(params.smoothing >= 0) || !(params.feature_angle_deg > 0 && params.feature_angle_deg <= 180))
-    throw InvalidInput("smooth: the smoothing must be >= 0 and the feature angle in (0, 180] degrees");
+  if (params.method == SmoothMethod::Rbf && params.neighbors < 13)
+    throw InvalidInput("smooth: at least 13 neighbours are needed (the local cubic height map has 10 terms)");
+  if (!(params.smoothing >= 0) || !(params.feature_angle_deg > 0 && params.feature_angle_deg <= 180) ||
+      !(params.relaxation >= 0 && params.relaxation <= 1))
+    throw InvalidInput("smooth: the smoothing must be >= 0, the relaxation in [0, 1] and the feature angle in (0, 180] degrees");
   const auto start = std::chrono::steady_clock::now();
   const ShiftedToOrigin near_origin(mesh);
   SmoothResult result;
@@ -58,13 +59,17 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
   const bool keep_volume = params.preserve_volume && is_closed;
   if (is_closed) result.volume_before = volume(mesh);
 
+  // The guard allows the crossings the input had; they are counted only when a step leaves one.
+  const TriangleSoup input = soup_from_mesh(mesh);
+  const auto input_intersections = [&] {
+    if (!result.input_self_intersections) result.input_self_intersections = find_self_intersections(input).count;
+    return *result.input_self_intersections;
+  };
   if (params.method == SmoothMethod::Taubin) {
     taubin_smooth(mesh, params.iterations);
   } else if (params.method == SmoothMethod::Laplace) {
     laplace_smooth(mesh, params.iterations);
   } else {
-    const std::size_t input_intersections = find_self_intersections(soup_from_mesh(mesh)).count;
-    result.input_self_intersections = input_intersections;
     for (std::size_t i = 0; i < params.iterations; ++i) {
       RbfIterationCounts counts;
       const std::vector<TriMesh::Point> start_of_step(mesh.points(), mesh.points() + mesh.n_vertices());
@@ -73,6 +78,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
       result.undone_vertices += detail::undo_new_intersections(mesh, start_of_step, input_intersections);
       result.feature_line_vertices = counts.feature_line;
       result.corner_vertices = counts.corners;
+      result.noise_crease_vertices = counts.noise_creases;
       result.boundary_vertices = counts.boundary;
       result.unfitted_vertices = counts.unfitted;
       if (params.progress) params.progress(static_cast<double>(i + 1) / static_cast<double>(params.iterations));
@@ -84,8 +90,8 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
     // kept up to the few vertices put back).
     const std::vector<TriMesh::Point> unrestored(mesh.points(), mesh.points() + mesh.n_vertices());
     restore_volume(mesh, *result.volume_before);
-    if (result.input_self_intersections)
-      result.undone_vertices += detail::undo_new_intersections(mesh, unrestored, *result.input_self_intersections);
+    if (params.method == SmoothMethod::Rbf)
+      result.undone_vertices += detail::undo_new_intersections(mesh, unrestored, input_intersections);
   }
   if (result.volume_before) result.volume_after = volume(mesh);
   for (const auto v : mesh.vertices())

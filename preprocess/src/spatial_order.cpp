@@ -20,24 +20,31 @@ std::uint64_t spread_bits(std::uint64_t x) {
 
 }  // namespace
 
-TriangleSoup in_spatial_order(const TriangleSoup& soup) {
-  const std::size_t n = soup.points.size();
-  if (n == 0) return soup;
-  Vec3 low = soup.points.front(), high = low;
-  for (const Vec3& p : soup.points) {
+std::vector<std::uint32_t> morton_order(const std::vector<Vec3>& points) {
+  const std::size_t n = points.size();
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  if (n == 0) return order;
+  Vec3 low = points.front(), high = low;
+  for (const Vec3& p : points) {
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
   const Vec3 extent = (high - low).cwiseMax(Vec3::Constant(1e-300));
   std::vector<std::uint64_t> key(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 cell = (soup.points[i] - low).cwiseQuotient(extent) * 2097151.0;  // 21 bits an axis
+    const Vec3 cell = (points[i] - low).cwiseQuotient(extent) * 2097151.0;  // 21 bits an axis
     key[i] = spread_bits(static_cast<std::uint64_t>(cell.x())) | spread_bits(static_cast<std::uint64_t>(cell.y())) << 1 |
              spread_bits(static_cast<std::uint64_t>(cell.z())) << 2;
   }
-  std::vector<std::uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  return order;
+}
+
+TriangleSoup in_spatial_order(const TriangleSoup& soup) {
+  const std::size_t n = soup.points.size();
+  if (n == 0) return soup;
+  const std::vector<std::uint32_t> order = morton_order(soup.points);
   TriangleSoup sorted;
   sorted.points.reserve(n);
   std::vector<std::uint32_t> new_index(n);

@@ -3,7 +3,14 @@
 
 #include "meshprep/core/mesh.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace meshprep::detail {
+
+/// The indices of `points` in Morton (Z-curve) order of their positions: work done in this order
+/// finds the neighbours of the previous item still in the cache.
+std::vector<std::uint32_t> morton_order(const std::vector<Vec3>& points);
 
 /// The same surface with its vertices in Morton (Z-curve) order of their positions and its faces
 /// ordered by their smallest vertex index. The collapse loop walks 1-rings and 2-rings ~10^6 times
