@@ -65,9 +65,13 @@ TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
   EXPECT_NEAR(static_cast<double>(r.final_quality.faces), 640.0, 640 * 0.02);  // the target +-1 %, enhance +-1 %
   EXPECT_TRUE(r.fem.ready) << (r.fem.problems.empty() ? "" : r.fem.problems.front());
   ASSERT_TRUE(r.tet_quality && r.final_quality.volume);
-  // TetGen fills the closed polyhedron: the tets' volume is the surface's, up to the rounding of
-  // the Steiner points TetGen places on the facets (1e-6 relative, as in shared_tet_test.cpp).
-  EXPECT_NEAR(r.tet_quality->volume, *r.final_quality.volume, 1e-6 * *r.final_quality.volume);
+  // TetGen fills the closed polyhedron and, by default on a closed surface (keep_surface "auto"),
+  // keeps its triangles (-Y): the tets' boundary is the final surface, face for face, and their
+  // volume is its volume to round-off.
+  EXPECT_NE(r.tetgen_switches.find('Y'), std::string::npos) << r.tetgen_switches;
+  ASSERT_TRUE(r.tets);
+  EXPECT_EQ(r.tets->boundary_faces.size(), r.final_quality.faces);
+  EXPECT_NEAR(r.tet_quality->volume, *r.final_quality.volume, 1e-12 * *r.final_quality.volume);
   EXPECT_EQ(r.tet_quality->inverted_tets, 0u);
   ASSERT_TRUE(r.final_quality.reference);
   EXPECT_LT(r.final_quality.reference->hausdorff_relative, 0.01);  // half the faces of a unit sphere
@@ -78,7 +82,7 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
   // TetGen -Y keeps the boundary triangles as given, so the volume is exact to round-off (without
   // it TetGen merges nearly coplanar facets within its tolerance: 1e-6 relative on this terrain).
   PipelineConfig config = small_config();
-  config.tetrahedralize.params.keep_surface = true;
+  config.tetrahedralize.keep_surface = true;  // not the default for a block: its walls are thin
   const PipelineResult r = run_pipeline(terrain_points(), config);
   EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
   EXPECT_TRUE(r.from_points);
@@ -101,6 +105,20 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
     volume += projected * ((a.z() + b.z() + c.z()) / 3 - base);
   }
   EXPECT_NEAR(r.tet_quality->volume, volume, 1e-9 * volume);
+}
+
+TEST_F(Pipeline, TetGenSplitsABlocksTrianglesUnlessToldToKeepThem) {
+  // keep_surface "auto": an extruded block's walls are long thin triangles, which TetGen may split
+  // (no -Y); set either way, the key wins over the automatic choice.
+  PipelineConfig config = small_config();
+  const PipelineResult block = run_pipeline(terrain_points(), config);
+  ASSERT_TRUE(block.tets && block.extrusion_depth);
+  EXPECT_EQ(block.tetgen_switches.find('Y'), std::string::npos) << block.tetgen_switches;
+  config.simplify.ratio = 0.5;
+  config.tetrahedralize.keep_surface = false;
+  const PipelineResult sphere = run_pipeline(mesh_file(test::icosphere(3), "sphere.off"), config);
+  ASSERT_TRUE(sphere.tets);
+  EXPECT_EQ(sphere.tetgen_switches.find('Y'), std::string::npos) << sphere.tetgen_switches;
 }
 
 TEST_F(Pipeline, WhatNoStageMendsIsRefusedBeforeAnyWork) {

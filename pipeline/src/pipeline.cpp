@@ -301,8 +301,9 @@ class Run {
     record.faces_before = record.faces_after = result_.surface.triangles.size();
     fill_shape(record, result_.final_quality);
     const Clock::time_point start = Clock::now();
+    TetParams params = config_.tetrahedralize.params;
     if (std::optional<SurfacePlc> plc = prepare_plc(record)) {
-      TetParams params = config_.tetrahedralize.params;
+      params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
       params.cancelled = observer_.cancelled;
       try {
         result_.tets = tetrahedralize_plc(*plc, params);
@@ -313,7 +314,7 @@ class Run {
     record.seconds = seconds_since(start);
     if (result_.tets) {
       result_.tet_quality = analyze_tet_quality(*result_.tets);
-      result_.tetgen_switches = tetgen_switches(config_.tetrahedralize.params, result_.tet_quality->volume);
+      result_.tetgen_switches = tetgen_switches(params, result_.tet_quality->volume);
       if (result_.tet_quality->inverted_tets > 0)
         result_.fem.problems.push_back(std::to_string(result_.tet_quality->inverted_tets) + " inverted tets");
       const TetQualityReport& q = *result_.tet_quality;

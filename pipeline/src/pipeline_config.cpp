@@ -255,8 +255,15 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
                         "TetGen -q dihedral target (degrees); 0 = TetGen's default"));
   keys.push_back(number("tetrahedralize", "max_volume_relative", p.max_volume_relative, 0, 1, false,
                         "largest tet volume / enclosed volume; 0 = no bound"));
-  keys.push_back(flag("tetrahedralize", "keep_surface", p.keep_surface,
-                      "the boundary keeps exactly the surface triangles (TetGen -Y)"));
+  keys.push_back({"tetrahedralize", "keep_surface", "true, false or \"auto\"",
+                  "the boundary keeps exactly the surface triangles (TetGen -Y); auto: yes for a closed surface, "
+                  "no for an extruded block",
+                  [&t](const Json& v) {
+                    if (v.is_boolean()) t.keep_surface = v.get<bool>();
+                    else if (v.is_string() && v.get<std::string>() == "auto") t.keep_surface.reset();
+                    else throw BadValue{"expected true, false or \"auto\", not " + shown(v)};
+                  },
+                  [&t] { return t.keep_surface ? OrderedJson(*t.keep_surface) : OrderedJson("auto"); }});
   keys.push_back(number("tetrahedralize", "extrude_base", t.extrude_base, 0, INFINITY, false,
                         "an open height field becomes a block with its base this far below the lowest point; 0 = use "
                         "extrude_base_relative"));
