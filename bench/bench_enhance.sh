@@ -3,8 +3,9 @@
 # (10 %, OpenMesh quadric) and fandisk (30 %, CGAL GH), each against its ORIGINAL full mesh, and on
 # femur against itself. Each input gets an "input" row (`meshprep quality IN --reference ORIG`) and
 # an "enhanced" row. Distances are relative to the reference's bounding-box diagonal; time is the
-# enhancement itself (time_seconds). Then TetGen (`meshprep tetrahedralize`, its defaults) on the raw
-# and on the enhanced femur: the smallest dihedral angle of the tets.
+# enhancement itself (time_seconds). Then TetGen (`meshprep tetrahedralize`, its defaults, and with
+# --keep-surface, the pipeline's choice for a closed surface) on the raw and on the enhanced femur:
+# the smallest dihedral angle of the tets.
 # Usage: bench/bench_enhance.sh [build-dir]
 source "$(dirname "$0")/bench_setup.sh" "${1:-}" meshes/decimated
 
@@ -40,11 +41,13 @@ echo
 echo "| femur surface for TetGen | tets | smallest dihedral | tets under 10° | TetGen time |"
 echo "| --- | --- | --- | --- | --- |"
 for surface in "raw:$data/femur.off" "enhanced:$work/femur.off"; do
-  "$bin" tetrahedralize "${surface#*:}" -o "$work/tets.vtu" --json "$work/t.json" > /dev/null
-  python3 - "${surface%%:*}" "$work/t.json" <<'PY'
+  for keep in "" --keep-surface; do
+    "$bin" tetrahedralize "${surface#*:}" -o "$work/tets.vtu" --json "$work/t.json" $keep > /dev/null
+    python3 - "${surface%%:*}${keep:+ $keep}" "$work/t.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[2])); t = j["tet_quality"]
 print("| %s | %d | %.2f° | %.2f %% | %.1f s |" % (sys.argv[1], t["tetrahedra"], t["min_dihedral_deg"]["min"],
       100 * t["tets_min_dihedral_below_10"], j["tetgen_seconds"]))
 PY
+  done
 done

@@ -1,7 +1,6 @@
 #include "meshprep/preprocess/enhance.h"
 
 #include "enhance_defaults.h"
-#include "intersection_guard.h"
 #include "move_guards.h"
 #include "quality_tail.h"
 #include "surface_constraints.h"
@@ -125,10 +124,12 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     result.removed_vertices = removed_vertices;
   }
   mesh = best_mesh;
-  // The kept round's fit ran before its guards took moves back; one more fit settles the result.
-  const Points fitted_from = points_of(mesh);
+  // The kept round's fit ran before its guards took moves back; one more fit settles the result,
+  // under the same guards as a round's moves (a fit along the normals can sharpen an edge into a
+  // fold as well as make the surface cross itself).
+  const detail::MoveGuards final_guards(mesh, constraints, allowed_distance, allowed_intersections, max_deviation);
   fit_surface_vertices(mesh, constraints, min_angle_cosine);
-  result.undone_moves += detail::undo_new_intersections(mesh, fitted_from, allowed_intersections);
+  result.undone_moves += final_guards.enforce(mesh);
   result.after = detail::measure_tail(mesh, params.target_min_angle_deg);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

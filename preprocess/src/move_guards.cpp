@@ -1,6 +1,7 @@
 #include "move_guards.h"
 
 #include "intersection_guard.h"
+#include "triangle_angles.h"
 
 #include <tbb/parallel_for.h>
 
@@ -110,6 +111,15 @@ std::size_t MoveGuards::undo_bad_faces(TriMesh& mesh, const std::vector<char>& d
       if (n0.dot(n1) <= kTurnCosine * n0.norm() * n1.norm()) {
         bad[k] = 1;
         return;
+      }
+      for (const auto h : mesh.fh_range(suspects[k])) {  // no new fold with a neighbour (its move included)
+        const auto g = mesh.opposite_face_handle(h);
+        if (!g.is_valid()) continue;
+        const Vec3 m0 = normal_of(corners_of(mesh, g, &before_)), m1 = normal_of(corners_of(mesh, g));
+        if (sharpens_into_fold(normal_cosine(n0, m0), normal_cosine(n1, m1))) {
+          bad[k] = 1;
+          return;
+        }
       }
       const double deviation = face_deviation(corners, constraints_);
       bad[k] = deviation > max_deviation_ && deviation > face_deviation(old_corners, constraints_);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace meshprep::detail {
 namespace {
@@ -37,6 +38,19 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
     const Vec3 n0 = area_normal(a, b, c), n1 = area_normal(b, a, d);
     const Vec3 m0 = area_normal(a, d, c), m1 = area_normal(d, b, c);
     if (m0.dot(m1) < cos_max * m0.norm() * m1.norm()) continue;
+    // No new fold with the faces around the quad: (a, d, c) takes edges c-a of (a, b, c) and a-d
+    // of (b, a, d), (d, b, c) takes d-b and b-c.
+    const auto outside = [&](TriMesh::HalfedgeHandle h) { return mesh.opposite_face_handle(h); };
+    const std::pair<TriMesh::FaceHandle, std::pair<const Vec3*, const Vec3*>> sides[] = {
+        {outside(mesh.prev_halfedge_handle(h0)), {&n0, &m0}}, {outside(mesh.next_halfedge_handle(h1)), {&n1, &m0}},
+        {outside(mesh.prev_halfedge_handle(h1)), {&n1, &m1}}, {outside(mesh.next_halfedge_handle(h0)), {&n0, &m1}}};
+    bool folds = false;
+    for (const auto& [face, normals] : sides) {
+      if (!face.is_valid()) continue;
+      const Vec3 neighbour = to_eigen(mesh.calc_face_normal(face));
+      folds = folds || sharpens_into_fold(normal_cosine(*normals.first, neighbour), normal_cosine(*normals.second, neighbour));
+    }
+    if (folds) continue;
     // A fold (the two faces turned by more than 90 degrees against each other: a thin wedge that
     // TetGen can only fill with flat tets) is undone when the flip leaves the two faces nearly
     // coplanar and no angle under the target that was not there.
@@ -73,7 +87,9 @@ CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& co
   const Vec3 x = point(mesh, v), y = point(mesh, w);
   CollapseEffect effect;
   double nearest_new_face = INFINITY;  // from the removed vertex
-  for (const auto f : mesh.vf_range(v)) {
+  for (const auto h_out : mesh.voh_range(v)) {
+    const auto f = mesh.face_handle(h_out);
+    if (!f.is_valid()) continue;
     Vec3 before[3], after[3];
     int k = 0;
     bool has_w = false;
@@ -86,10 +102,50 @@ CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& co
     if (has_w) continue;  // one of the two faces that vanish
     const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
     if (n0.dot(n1) <= 0.5 * n0.norm() * n1.norm()) return effect;  // turns by more than 60 degrees
+    // No new fold across the face's edge opposite v (that neighbour does not move).
+    const auto across = mesh.opposite_face_handle(mesh.next_halfedge_handle(h_out));
+    if (across.is_valid()) {
+      const Vec3 neighbour = to_eigen(mesh.calc_face_normal(across));
+      if (sharpens_into_fold(normal_cosine(n0, neighbour), normal_cosine(n1, neighbour))) return effect;
+    }
     if (distance_to_reference(constraints, (after[0] + after[1] + after[2]) / 3.0) > std::max(old_gap, max_deviation))
       return effect;
     effect.new_worst = std::max(effect.new_worst == 1 ? -1.0 : effect.new_worst, smallest_angle_cosine(after[0], after[1], after[2]));
     nearest_new_face = std::min(nearest_new_face, (closest_point_on_triangle(x, after[0], after[1], after[2]) - x).norm());
+  }
+  // No new fold along the edges out of v either: between two faces that both stay, or, where one
+  // of them vanishes, between the other and the face that takes its place across (w, p).
+  const auto normals = [&](TriMesh::FaceHandle f) {
+    Vec3 before[3], after[3];
+    int k = 0;
+    for (const VertexHandle u : mesh.fv_range(f)) {
+      before[k] = point(mesh, u);
+      after[k++] = u == v ? y : point(mesh, u);
+    }
+    return std::make_pair(area_normal(before[0], before[1], before[2]), area_normal(after[0], after[1], after[2]));
+  };
+  const auto vanishes = [&](TriMesh::FaceHandle f) {
+    for (const VertexHandle u : mesh.fv_range(f))
+      if (u == w) return true;
+    return false;
+  };
+  for (const auto h_out : mesh.voh_range(v)) {
+    const VertexHandle p = mesh.to_vertex_handle(h_out);
+    TriMesh::FaceHandle stays = mesh.face_handle(h_out), other = mesh.opposite_face_handle(h_out);
+    if (p == w || !stays.is_valid() || !other.is_valid()) continue;
+    if (vanishes(stays)) std::swap(stays, other);
+    if (vanishes(stays)) continue;
+    const auto [kept_before, kept_after] = normals(stays);
+    const auto [other_before, other_after] = normals(other);
+    Vec3 neighbour_after = other_after;
+    if (vanishes(other)) {  // its edge (p, w) joins `stays` to the face across it
+      TriMesh::FaceHandle across;
+      for (const auto e : mesh.fh_range(other))
+        if (mesh.from_vertex_handle(e) != v && mesh.to_vertex_handle(e) != v) across = mesh.opposite_face_handle(e);
+      if (!across.is_valid()) continue;
+      neighbour_after = to_eigen(mesh.calc_face_normal(across));
+    }
+    if (sharpens_into_fold(normal_cosine(kept_before, other_before), normal_cosine(kept_after, neighbour_after))) return effect;
   }
   effect.acceptable = nearest_new_face <= max_deviation && effect.new_worst < old_worst;
   return effect;

@@ -4,6 +4,7 @@
 #include "meshprep/core/mesh.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace meshprep::detail {
 
@@ -19,6 +20,18 @@ inline double smallest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c)
 
 /// (b - a) x (c - a): twice the area times the unit normal.
 inline Vec3 area_normal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+/// Cosine of the angle between two (area) normals.
+inline double normal_cosine(const Vec3& m, const Vec3& n) { return m.dot(n) / (m.norm() * n.norm()); }
+
+/// Whether two faces that share an edge, their normals' cosine going from `before` to `after`,
+/// become a fold: the solid's angle along the edge under 20 degrees (the normals opposite within
+/// 20 degrees) and smaller than it was. Any tet on such an edge is at least that flat, so the
+/// enhancement makes none (an input's own folds may stay, no sharper).
+inline bool sharpens_into_fold(double before, double after) {
+  static const double fold_cosine = -std::cos(15.0 * M_PI / 180.0);
+  return after < fold_cosine && after < before;
+}
 
 /// What moving vertex v to `moved_to` does to the faces around it.
 struct VertexMove {
