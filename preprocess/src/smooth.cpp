@@ -57,10 +57,10 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
   const std::vector<TriMesh::Point> before(mesh.points(), mesh.points() + mesh.n_vertices());
   const bool is_closed = closed(mesh);
   const bool keep_volume = params.preserve_volume && is_closed;
-  if (is_closed) result.volume_before = volume(mesh);
+  const TriangleSoup input = soup_from_mesh(mesh);
+  if (is_closed) result.volume_before = signed_volume(input);
 
   // The guard allows the crossings the input had; they are counted only when a step leaves one.
-  const TriangleSoup input = soup_from_mesh(mesh);
   const auto input_intersections = [&] {
     if (!result.input_self_intersections) result.input_self_intersections = find_self_intersections(input).count;
     return *result.input_self_intersections;

@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace meshprep {
 namespace {
@@ -73,14 +74,10 @@ SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t 
   for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
   std::sort(pairs.begin(), pairs.end());
   SelfIntersections result;
-  for (const auto& pair : pairs) {
-    if (cap > 0 && result.count == cap) {
-      result.capped = true;
-      return result;
-    }
-    ++result.count;
-    result.pairs.push_back(pair);
-  }
+  result.capped = cap > 0 && pairs.size() > cap;
+  if (result.capped) pairs.resize(cap);
+  result.count = pairs.size();
+  result.pairs = std::move(pairs);
   return result;
 }
 
