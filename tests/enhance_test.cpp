@@ -80,7 +80,7 @@ TEST(Enhance, ASliverInAFlatGridIsRepairedInThePlane) {
 TEST(Enhance, CubeEdgesAndCornersStay) {
   // Vertices pushed along a cube edge and inside a side make slivers; the edge vertices may only
   // slide along their edge, the corners not at all, and every vertex stays on the cube.
-  const int n = 6;  // an edge is a run of 6 sharp edges: a crease (runs of 5 or more)
+  const int n = 6;  // an edge is a run of 6 unit edges: a crease (runs of 5 median lengths or more)
   TriangleSoup cube = test::subdivided_cube(n);
   for (Vec3& p : cube.points) {
     if (p == Vec3(1, 0, 0)) p = Vec3(1.8, 0, 0);
@@ -109,6 +109,34 @@ TEST(Enhance, CubeEdgesAndCornersStay) {
     }
   }
   EXPECT_EQ(find_self_intersections(soup_from_mesh(mesh)).count, 0u);
+}
+
+TEST(Enhance, BoundaryCornersStay) {
+  // A boundary vertex of a square grid pushed next to a corner makes a sliver there. The boundary
+  // vertices may slide along their side, but the four corners (two boundary edges at a right
+  // angle) not at all: sliding one along either side would cut the square's corner off.
+  const int n = 6;
+  TriangleSoup square = test::grid(n);
+  square.points[1] = Vec3(0.15, 0, 0);
+  TriMesh mesh = mesh_from_soup(square);
+  const double before = smallest_angle(mesh);
+  const EnhanceResult result = enhance(mesh, nullptr);
+  EXPECT_EQ(result.fixed_vertices, 4u);
+  EXPECT_GT(smallest_angle(mesh), before + 10);
+  double area = 0;
+  for (const auto f : mesh.faces()) area += mesh.calc_face_area(f);
+  EXPECT_NEAR(area, n * n, 1e-9);
+  for (const auto v : mesh.vertices()) {
+    const Vec3 p = at(mesh, v), q = square.points[static_cast<std::size_t>(v.idx())];
+    const bool corner = (q.x() == 0 || q.x() == n) && (q.y() == 0 || q.y() == n);
+    if (corner) {
+      EXPECT_EQ(p, q) << "corner " << v.idx() << " moved";
+    }
+    for (int i = 0; i < 2; ++i)
+      if (q[i] == 0 || q[i] == n) {
+        EXPECT_NEAR(p[i], q[i], 1e-12) << "vertex " << v.idx() << " left its side";
+      }
+  }
 }
 
 TEST(Enhance, ShapeResidualDerivativesAgree) {

@@ -76,21 +76,24 @@ TEST(SharedEnhance, Bunny10Percent) {
   SKIP_WITHOUT_SHARED_DATA();
   const Enhanced e = enhance_shared("decimated/bunny00_0.1_openmesh.off", "bunny00.off");
   expect_valid(e);
-  EXPECT_LE(e.output.faces_min_angle_below_20, 0.02);       // goal 2 % (measured 0 %; input 25.7 %)
-  EXPECT_LE(e.output.radius_ratio.p95, 1.8);                // goal 1.8 (measured 1.28; input 6.48)
-  EXPECT_LE(e.output.reference->hausdorff_relative, 2.5e-3);  // goal (measured 2.2e-3)
+  EXPECT_LE(e.output.faces_min_angle_below_20, 0.02);       // goal 2 % (measured 0.07 %; input 25.7 %)
+  EXPECT_LE(e.output.radius_ratio.p95, 1.8);                // goal 1.8 (measured 1.42; input 6.48)
+  EXPECT_LE(e.output.reference->hausdorff_relative, 2.5e-3);  // goal (measured 2.09e-3)
   EXPECT_LE(e.output.reference->rms_relative, 3.5e-4);      // goal (measured 2.5e-4)
-  EXPECT_LE(std::abs(*e.output.reference->volume_change_percent), 0.1);  // goal 0.1 % (measured 0.02 %)
+  EXPECT_LE(std::abs(*e.output.reference->volume_change_percent), 0.1);  // goal 0.1 % (measured 0.01 %)
 }
 
 TEST(SharedEnhance, Fandisk30Percent) {
   SKIP_WITHOUT_SHARED_DATA();
   const Enhanced e = enhance_shared("decimated/fandisk_0.3_cgal_gh.off", "fandisk.off");
   expect_valid(e);
-  // Goals 3 %, Hausdorff 1.0e-3, RMS 0.5e-4 are not met yet: measured 4.2 %, 2.1e-3, 1.3e-4
+  // Goals 3 %, Hausdorff 1.0e-3, RMS 0.5e-4 are not met yet: measured 3.97 %, 1.97e-3, 1.3e-4
   // (input 17.0 %; the best peer keeping the surface, angle-and-area smoothing, left 14.4 %).
   EXPECT_LE(e.output.faces_min_angle_below_20, 0.045);
-  EXPECT_LE(e.output.reference->hausdorff_relative, 3.5e-3);
+  // The deviation bound (2e-3 of the diagonal, enhance's default) plus 5 % for the flips, checked
+  // at their new diagonal only: the long straight edges stay creases, the corners stay, and
+  // collapses keep the original covered (measured 1.97e-3; 2.4e-3 before the collapse check).
+  EXPECT_LE(e.output.reference->hausdorff_relative, 2.1e-3);
   EXPECT_LE(e.output.reference->rms_relative, 2.0e-4);
 }
 
@@ -98,9 +101,9 @@ TEST(SharedEnhance, FemurAsIs) {
   SKIP_WITHOUT_SHARED_DATA();
   const Enhanced e = enhance_shared("femur.off", "femur.off");
   expect_valid(e);
-  EXPECT_LE(e.output.faces_min_angle_below_20, 0.01);       // goal 1 % (measured 0.04 %; input 10.7 %)
+  EXPECT_LE(e.output.faces_min_angle_below_20, 0.01);       // goal 1 % (measured 0.07 %; input 10.7 %)
   EXPECT_LE(e.output.reference->hausdorff_relative, 3e-3);  // goal (measured 2.0e-3)
-  EXPECT_GE(e.output.min_angle_deg.min, 15.0);              // goal 15 degrees (measured 15.4; input 0.45)
+  EXPECT_GE(e.output.min_angle_deg.min, 15.0);              // goal 15 degrees (measured 15.7; input 0.45)
   // No fold: the input's sharpest edge is 24.6 degrees, the enhancement makes none under 15 (it
   // made 0.06 before its guards refused folds, and TetGen's tets there were 0.6 degrees).
   EXPECT_GT(sharpest_edge_deg(read_soup((kMeshes / "femur.off").string())), 24.0);

@@ -13,19 +13,19 @@ namespace meshprep::detail {
 enum class VertexRole : std::uint8_t {
   Surface,  ///< on no feature: moves in its tangent plane
   Line,     ///< on exactly two feature edges (a crease or the boundary): slides along them
-  Fixed     ///< a corner (one or three or more feature edges) or a non-manifold vertex
+  Fixed     ///< a corner (one, or three or more feature edges, or two turning by over 60 degrees), or non-manifold
 };
 
 /// The features of a mesh, found once at the start, kept as properties of the mesh (so that they
 /// follow its elements through flips, collapses and garbage collection; flips and collapses never
 /// touch a feature edge or a vertex on one).
 ///
-/// Features are boundary edges and creases. A crease is a run of at least five edges whose
-/// dihedral angles exceed the feature angle, joined at vertices where the run goes nearly straight
-/// on (turns by less than 30 degrees) and that have no other such edge (measured: fandisk at 30 %
-/// keeps 456 of its 498 sharp edges, the femur 74 of 2595). A CAD part's creases are
-/// such runs; the isolated folds of a rough scan (femur: a quarter of its edges over 45 degrees,
-/// in every direction) are not, and stay free to move.
+/// Features are boundary edges and creases. A crease is a run, at least five median edge lengths
+/// long, of edges whose dihedral angles exceed the feature angle, joined at vertices where the run
+/// goes nearly straight on (turns by less than 30 degrees) and that have no other such edge. A CAD
+/// part's creases are such runs, even where decimation left a long straight edge of the part only
+/// two or three edges (fandisk at 30 %); the isolated folds of a rough scan (femur: a quarter of its
+/// edges over 45 degrees, in every direction) are not, and stay free to move.
 class SurfaceConstraints {
  public:
   /// `mesh` and `reference` must outlive this object, which adds its properties to `mesh` and

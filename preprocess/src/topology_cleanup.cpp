@@ -5,8 +5,10 @@
 #include "meshprep/quality/triangle_bvh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace meshprep::detail {
 namespace {
@@ -17,6 +19,54 @@ Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v))
 
 double distance_to_reference(const SurfaceConstraints& constraints, const Vec3& p) {
   return std::sqrt(constraints.closest_on_reference(p).squared_distance);
+}
+
+using Corners = std::array<Vec3, 3>;
+
+double distance_to_patch(const Vec3& p, const std::vector<Corners>& faces) {
+  double nearest = INFINITY;
+  for (const Corners& c : faces) nearest = std::min(nearest, (closest_point_on_triangle(p, c[0], c[1], c[2]) - p).squaredNorm());
+  return std::sqrt(nearest);
+}
+
+double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// Whether replacing a patch of faces (`before`, bounded by the `rim` segments) by `after` (the
+// same rim) keeps every reference vertex under the patch within max(limit, its distance before).
+// The new faces' own points can all lie on the reference while the reference is uncovered: a
+// chord across a faceted cylinder's strips (fandisk) leaves the strip line between them 1.6 times
+// the bound away. A reference vertex nearer the rim than the patch's inside belongs to the faces
+// beyond the rim and is not asked.
+bool keeps_reference_covered(const SurfaceConstraints& constraints, const std::vector<Corners>& before,
+                             const std::vector<Corners>& after, const std::vector<std::pair<Vec3, Vec3>>& rim,
+                             double limit) {
+  Box3 box;
+  box.setEmpty();
+  for (const Corners& c : before)
+    for (const Vec3& q : c) box.extend(q);
+  box.min().array() -= limit;
+  box.max().array() += limit;
+  const TriangleSoup& reference = constraints.reference_bvh().soup();
+  bool covered = true;
+  constraints.reference_bvh().for_each_overlapping(box, [&](std::size_t face) {
+    for (const std::uint32_t corner : reference.triangles[face]) {
+      const Vec3& p = reference.points[corner];
+      if (!covered) return;
+      if (!box.contains(p)) continue;
+      const double old_distance = distance_to_patch(p, before);
+      if (old_distance > limit) continue;
+      double to_rim = INFINITY;
+      for (const auto& [a, b] : rim) to_rim = std::min(to_rim, distance_to_segment(p, a, b));
+      if (to_rim <= old_distance) continue;
+      if (distance_to_patch(p, after) > limit) covered = false;
+    }
+  });
+  return covered;
 }
 
 }  // namespace
@@ -86,7 +136,17 @@ CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& co
   const VertexHandle v = mesh.from_vertex_handle(h), w = mesh.to_vertex_handle(h);
   const Vec3 x = point(mesh, v), y = point(mesh, w);
   CollapseEffect effect;
+  // Each face that vanishes merges its edge (v, p) into (w, p), and OpenMesh may keep either
+  // handle: a feature edge (w, p) would lose its mark, and the line through w its segment.
+  for (const auto side : {h, mesh.opposite_halfedge_handle(h)}) {
+    if (mesh.is_boundary(side)) continue;
+    const auto next = mesh.next_halfedge_handle(side);
+    if (constraints.is_feature(mesh.edge_handle(next)) || constraints.is_feature(mesh.edge_handle(mesh.next_halfedge_handle(next))))
+      return effect;
+  }
   double nearest_new_face = INFINITY;  // from the removed vertex
+  std::vector<Corners> fan_before, fan_after;
+  std::vector<std::pair<Vec3, Vec3>> rim;
   for (const auto h_out : mesh.voh_range(v)) {
     const auto f = mesh.face_handle(h_out);
     if (!f.is_valid()) continue;
@@ -99,7 +159,11 @@ CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& co
       after[k] = u == v ? y : before[k];
       ++k;
     }
+    fan_before.push_back({before[0], before[1], before[2]});
+    const auto opposite = mesh.next_halfedge_handle(h_out);
+    rim.emplace_back(point(mesh, mesh.from_vertex_handle(opposite)), point(mesh, mesh.to_vertex_handle(opposite)));
     if (has_w) continue;  // one of the two faces that vanish
+    fan_after.push_back({after[0], after[1], after[2]});
     const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
     if (n0.dot(n1) <= 0.5 * n0.norm() * n1.norm()) return effect;  // turns by more than 60 degrees
     // No new fold across the face's edge opposite v (that neighbour does not move).
@@ -147,7 +211,8 @@ CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& co
     }
     if (sharpens_into_fold(normal_cosine(kept_before, other_before), normal_cosine(kept_after, neighbour_after))) return effect;
   }
-  effect.acceptable = nearest_new_face <= max_deviation && effect.new_worst < old_worst;
+  effect.acceptable = nearest_new_face <= max_deviation && effect.new_worst < old_worst &&
+                      keeps_reference_covered(constraints, fan_before, fan_after, rim, max_deviation);
   return effect;
 }
 

@@ -28,8 +28,10 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
 /// Removes Surface vertices where a smallest angle around them is under the target: each is
 /// collapsed into the neighbour (kept where it is) that gives the best worst angle, when that beats
 /// the old worst angle, no remaining face turns by more than 60 degrees, the new faces' centroids
-/// stay within max(max_deviation, the old faces' largest centroid distance) of the reference, and
-/// the removed vertex is within max_deviation of a new face. This takes away valence-3 vertices
+/// stay within max(max_deviation, the old faces' largest centroid distance) of the reference, the
+/// removed vertex is within max_deviation of a new face, every reference vertex under the fan that
+/// was within max_deviation of it still is, and no feature edge is merged away (the faces that
+/// vanish have none). This takes away valence-3 vertices
 /// and the ends of very short edges, which moving vertices cannot mend. At most `budget` vertices;
 /// the mesh is garbage-collected afterwards. Returns the vertices removed.
 std::size_t collapse_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
