@@ -7,56 +7,57 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <utility>
 
 namespace meshprep::detail {
 namespace {
 
 constexpr int kMax = kMaxBlockCentres;
-using Bordered = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax + 4, kMax + 4>;
 using Basis = Eigen::Matrix<double, Eigen::Dynamic, 4, 0, kMax, 4>;
 using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMax, 1>;
 // Same rank threshold as thin_plate_spline.cpp: unit-size centres within ~1e-10 of a plane are coplanar.
 constexpr double kRankThreshold = 1e-10;
 constexpr double kEightPi = 8.0 * M_PI;
 
-// Gaussian elimination with partial pivoting of `matrix` (size x size, overwritten) for two
-// right-hand sides, solved in place. Eigen's PartialPivLU on a runtime-sized matrix goes through
-// its blocked GEMM path, which at this size (~18) costs 6 us a solve against ~1.5 us here, and
-// the simplifier does ~10^5 of them (bench/RESULTS.md). Returns false if a pivot vanishes.
-bool solve_two(Bordered& matrix, int size, double (*rhs)[2]) {
-  for (int k = 0; k < size; ++k) {
-    int pivot = k;
-    for (int i = k + 1; i < size; ++i)
-      if (std::abs(matrix(i, k)) > std::abs(matrix(pivot, k))) pivot = i;
-    if (!(std::abs(matrix(pivot, k)) > 0)) return false;
-    if (pivot != k) {
-      matrix.row(k).swap(matrix.row(pivot));
-      std::swap(rhs[k][0], rhs[pivot][0]);
-      std::swap(rhs[k][1], rhs[pivot][1]);
-    }
-    const double inverse = 1.0 / matrix(k, k);
-    for (int i = k + 1; i < size; ++i) {
-      matrix(i, k) *= inverse;  // the multipliers, kept in column k
-      rhs[i][0] -= matrix(i, k) * rhs[k][0];
-      rhs[i][1] -= matrix(i, k) * rhs[k][1];
-    }
-    for (int j = k + 1; j < size; ++j) {  // column by column: contiguous in Eigen's column-major storage
-      const double pivot_row = matrix(k, j);
-      if (pivot_row == 0) continue;
-      for (int i = k + 1; i < size; ++i) matrix(i, j) -= matrix(i, k) * pivot_row;
-    }
+// Plain arrays and loops: at this size (n ~ 10-16) Eigen's runtime-sized blocks cost more in
+// dispatch than in arithmetic.
+using Square = double[kMax][kMax];
+using Vector = double[kMax];
+
+double dot(const Vector& x, const Vector& y, int from, int to) {
+  double sum = 0;
+  for (int i = from; i < to; ++i) sum += x[i] * y[i];
+  return sum;
+}
+
+// x <- (I - 2 v v^T) x on [from, n) (|v| = 1, v zero before `from`).
+void reflect(Vector& x, const Vector& v, int from, int n) {
+  const double t = 2 * dot(v, x, from, n);
+  for (int i = from; i < n; ++i) x[i] -= t * v[i];
+}
+
+// The Householder vector taking x (on [k, n)) onto the k-th axis.
+void householder(const Vector& x, int k, int n, Vector& v) {
+  for (int i = 0; i < k; ++i) v[i] = 0;
+  for (int i = k; i < n; ++i) v[i] = x[i];
+  const double norm = std::sqrt(dot(v, v, k, n));
+  v[k] += v[k] >= 0 ? norm : -norm;
+  const double length = std::sqrt(dot(v, v, k, n));
+  for (int i = k; i < n; ++i) v[i] /= length;
+}
+
+// A <- H A H with H = I - 2 v v^T, on the trailing block [k, n) only: the later reflectors and
+// Z^T A Z read nothing else.
+void reflect_both_sides(Square& a, const Vector& v, int k, int n) {
+  Vector p;
+  for (int i = k; i < n; ++i) {
+    double sum = 0;
+    for (int j = k; j < n; ++j) sum += a[i][j] * v[j];
+    p[i] = sum;
   }
-  for (int k = size - 1; k >= 0; --k) {  // back substitution, also column by column
-    rhs[k][0] /= matrix(k, k);
-    rhs[k][1] /= matrix(k, k);
-    if (!std::isfinite(rhs[k][0]) || !std::isfinite(rhs[k][1])) return false;
-    for (int i = 0; i < k; ++i) {
-      rhs[i][0] -= matrix(i, k) * rhs[k][0];
-      rhs[i][1] -= matrix(i, k) * rhs[k][1];
-    }
-  }
-  return true;
+  const double vp = dot(v, p, k, n);
+  for (int i = k; i < n; ++i) p[i] -= vp * v[i];  // w = p - (v.p) v
+  for (int i = k; i < n; ++i)
+    for (int j = k; j < n; ++j) a[i][j] -= 2 * (v[i] * p[j] + p[i] * v[j]);
 }
 
 }  // namespace
@@ -89,24 +90,58 @@ EnergyBlock collapse_energy_block(const Vec3* centres, int n, int a, int b) {
   }
   if (rank < 3) throw InvalidInput(std::string(who) + ": the centres are collinear");
   if (rank == n) return {};  // every deformation of the centres is affine: E = 0
-  const int size = n + rank;
-  Bordered bordered = Bordered::Zero(size, size);
+
+  // M = Z (Z^T A Z)^-1 Z^T with Z an orthonormal basis of the null space of B^T (the block
+  // inverse of eq. 2's bordered matrix). The reflectors that complete range(B) to an orthonormal
+  // basis give Z as their last n - rank columns; -Z^T A Z is positive definite (the distance
+  // kernel is conditionally negative definite), so one small Cholesky gives the three entries:
+  // E = -8 pi M / scale, E_ab = (8 pi / scale) (L^-1 Z^T e_a) . (L^-1 Z^T e_b). Half the work of
+  // an LU of the whole (n + rank)-square bordered matrix.
+  Square kernel;
   for (int i = 0; i < n; ++i) {
+    kernel[i][i] = 0;
     for (int j = 0; j < i; ++j) {
       const double r = (centres[i] - centres[j]).norm() / scale;  // phi(r) = r on the unit-size centres
       if (r == 0) throw InvalidInput(std::string(who) + ": two centres coincide");
-      bordered(i, j) = bordered(j, i) = r;
+      kernel[i][j] = kernel[j][i] = r;
     }
   }
-  bordered.topRightCorner(n, rank) = basis.leftCols(rank);
-  bordered.bottomLeftCorner(rank, n) = basis.leftCols(rank).transpose();
-  double columns[kMax + 4][2] = {};
-  columns[a][0] = 1;
-  columns[b][1] = 1;
-  if (!solve_two(bordered, size, columns)) throw SolverError(std::string(who) + ": the bordered system is singular");
-  // E = -8 pi M / scale (the volume kernel's sign; J scales as 1/length in R^3).
-  const double factor = -kEightPi / scale;
-  return {factor * columns[a][0], factor * columns[a][1], factor * columns[b][1]};
+  Vector columns[4], za = {}, zb = {};
+  for (int c = 0; c < rank; ++c)
+    for (int i = 0; i < n; ++i) columns[c][i] = basis(i, c);
+  za[a] = 1;
+  zb[b] = 1;
+  for (int k = 0; k < rank; ++k) {
+    Vector v;
+    householder(columns[k], k, n, v);
+    for (int c = k + 1; c < rank; ++c) reflect(columns[c], v, k, n);
+    reflect_both_sides(kernel, v, k, n);
+    reflect(za, v, k, n);
+    reflect(zb, v, k, n);
+  }
+  // Cholesky L L^T = -Z^T A Z (the trailing block), then u = L^-1 Z^T e_a, w = L^-1 Z^T e_b.
+  Square l;
+  for (int j = rank; j < n; ++j) {
+    double d = -kernel[j][j];
+    for (int k = rank; k < j; ++k) d -= l[j][k] * l[j][k];
+    if (!(d > 0)) throw SolverError(std::string(who) + ": the bordered system is singular");
+    l[j][j] = std::sqrt(d);
+    for (int i = j + 1; i < n; ++i) {
+      double sum = -kernel[i][j];
+      for (int k = rank; k < j; ++k) sum -= l[i][k] * l[j][k];
+      l[i][j] = sum / l[j][j];
+    }
+  }
+  for (int i = rank; i < n; ++i) {
+    for (int k = rank; k < i; ++k) {
+      za[i] -= l[i][k] * za[k];
+      zb[i] -= l[i][k] * zb[k];
+    }
+    za[i] /= l[i][i];
+    zb[i] /= l[i][i];
+  }
+  const double factor = kEightPi / scale;
+  return {factor * dot(za, za, rank, n), factor * dot(za, zb, rank, n), factor * dot(zb, zb, rank, n)};
 }
 
 }  // namespace meshprep::detail

@@ -14,8 +14,9 @@ struct EnergyBlock {
   double aa = 0, ab = 0, bb = 0;
 };
 
-/// Columns a and b of the inverse of the doubly bordered matrix of eq. (2) on the unit-size
-/// centres, by one small LU: E = -8 pi M / scale with M its upper-left block (thin_plate_spline.h).
+/// Entries a and b of E = -8 pi M / scale, M the upper-left block of the inverse of the doubly
+/// bordered matrix of eq. (2) on the unit-size centres (thin_plate_spline.h), through the null
+/// space of its border: one Cholesky of size n - 4 (or n - 3 for coplanar centres).
 /// \throws InvalidInput if n is outside [4, kMaxBlockCentres], two centres coincide or all are
 ///         collinear; SolverError if the bordered matrix is singular.
 EnergyBlock collapse_energy_block(const Vec3* centres, int n, int a, int b);
