@@ -1,3 +1,5 @@
+#include "../preprocess/src/indexed_heap.h"
+
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/simplify.h"
 #include "meshprep/preprocess/sliding_landmarks.h"
@@ -7,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <utility>
 #include <vector>
 
 using namespace meshprep;
@@ -285,4 +290,40 @@ TEST(BendingEnergy, AffineDeformationCostsNothingABumpDoes) {
   const SlidingLandmarks none_bump = relax_sliding_landmarks(source, bump, {}, {});
   EXPECT_LT(none_affine.bending_energy, 1e-10);
   EXPECT_GT(none_bump.bending_energy, 1e-3);
+}
+
+TEST(IndexedHeap, ExtractsByKeyThenIdWhateverTheUpdates) {
+  // The simplifier's edge queue: random keys with many ties, changed up and down, some removed;
+  // the ids must come out in the order of (key, id), as a sort of the final keys gives.
+  constexpr int n = 2000;
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> small_key(0, 50);  // ties
+  detail::IndexedHeap heap(n);
+  std::vector<double> key(n);
+  std::vector<bool> queued(n, false);
+  for (int round = 0; round < 3; ++round)
+    for (int id = 0; id < n; ++id) {
+      key[id] = small_key(random);
+      heap.set(id, key[id]);
+      queued[id] = true;
+    }
+  for (int id = 0; id < n; id += 7) {
+    heap.remove(id);
+    queued[id] = false;
+    EXPECT_FALSE(heap.contains(id));
+  }
+  std::vector<std::pair<double, int>> expected;
+  for (int id = 0; id < n; ++id)
+    if (queued[id]) expected.emplace_back(key[id], id);
+  std::sort(expected.begin(), expected.end());
+  for (const auto& [k, id] : expected) {
+    ASSERT_FALSE(heap.empty());
+    EXPECT_EQ(heap.front(), id);
+    heap.pop_front();
+  }
+  EXPECT_TRUE(heap.empty());
+  heap.set(3, 1.0);
+  heap.clear();
+  EXPECT_TRUE(heap.empty());
+  EXPECT_FALSE(heap.contains(3));
 }

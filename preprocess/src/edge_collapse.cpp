@@ -1,13 +1,13 @@
 #include "edge_collapse.h"
 
 #include "collapse_energy_block.h"
+#include "indexed_heap.h"
 #include "triangle_angles.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/local_height_map.h"
 #include "meshprep/preprocess/sliding_landmarks.h"
 
-#include <OpenMesh/Tools/Utils/HeapT.hh>
 
 #include <algorithm>
 #include <cmath>
@@ -37,19 +37,10 @@ constexpr double kFarPlacement = 2.0;
 // A face whose doubled area is below this fraction of its squared perimeter is degenerate.
 constexpr double kDegenerateArea = 1e-10;
 
-// Per-edge queue state for OpenMesh's indexed heap (one entry per edge, updated in place).
+// Per-edge queue state (the heap holds a copy of each queued edge's cost).
 struct EdgeQueueState {
   std::vector<double> cost;
-  std::vector<int> heap_position;
   std::vector<char> complete;  // 0: cost is a lower bound (quadric part only, or no placement yet)
-};
-
-struct EdgeHeapInterface {
-  EdgeQueueState* state;
-  bool less(int a, int b) { return state->cost[static_cast<std::size_t>(a)] < state->cost[static_cast<std::size_t>(b)]; }
-  bool greater(int a, int b) { return state->cost[static_cast<std::size_t>(a)] > state->cost[static_cast<std::size_t>(b)]; }
-  int get_heap_position(int e) { return state->heap_position[static_cast<std::size_t>(e)]; }
-  void set_heap_position(int e, int position) { state->heap_position[static_cast<std::size_t>(e)] = position; }
 };
 
 // Gathers the centres of an edge's local spline: its end points (indices 0 and 1), then the union
@@ -119,11 +110,9 @@ class Collapser {
         min_angle_cosine_(params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 2.0) {
     for (const VertexHandle v : mesh_.vertices()) locked_[idx(v)] = !mesh_.is_manifold(v);
     state_.cost.assign(mesh.n_edges(), 0.0);
-    state_.heap_position.assign(mesh.n_edges(), -1);
     state_.complete.assign(mesh.n_edges(), 0);
     quadric_cost_.assign(mesh.n_edges(), 0.0);
     shape_.assign(mesh.n_edges(), 0.0);
-    heap_.reserve(mesh.n_edges());
   }
 
   // Runs the queue. Each time the face count halves (closed meshes only: on the Jacksboro terrain
@@ -165,7 +154,7 @@ class Collapser {
       if (!state_.complete[i]) {
         state_.cost[i] = complete_cost(e);
         state_.complete[i] = 1;
-        heap_.update(edge);
+        heap_.set(edge, state_.cost[i]);
         if (heap_.front() != edge) continue;
       }
       switch (try_collapse(e)) {
@@ -175,7 +164,7 @@ class Collapser {
         case Outcome::Shape:
           if (retries_[i]++ < kMaxRetries) {
             state_.cost[i] = state_.cost[i] * kRetryPenalty + std::numeric_limits<double>::min();
-            heap_.update(edge);
+            heap_.set(edge, state_.cost[i]);
           } else {
             heap_.pop_front();
           }
@@ -197,7 +186,7 @@ class Collapser {
       if (mesh_.is_boundary(out)) continue;
       const HalfedgeHandle link = mesh_.next_halfedge_handle(out);
       if (mesh_.is_boundary(mesh_.from_vertex_handle(link)) || mesh_.is_boundary(mesh_.to_vertex_handle(link))) continue;
-      if (!heap_.is_stored(mesh_.edge_handle(link).idx())) push(mesh_.edge_handle(link));
+      if (!heap_.contains(mesh_.edge_handle(link).idx())) push(mesh_.edge_handle(link));
     }
   }
 
@@ -234,7 +223,7 @@ class Collapser {
     merged_into_[idx(removed)] = kept.idx();
     ++result_.collapses;
     for (const EdgeHandle around : touched_)
-      if (mesh_.status(around).deleted() && heap_.is_stored(around.idx())) heap_.remove(around.idx());
+      if (mesh_.status(around).deleted() && heap_.contains(around.idx())) heap_.remove(around.idx());
     last_kept_ = kept;
     if (params_.progress && result_.collapses % 1024 == 0)
       params_.progress(static_cast<double>(faces_before_ - faces_) / static_cast<double>(to_remove_));
@@ -306,10 +295,7 @@ class Collapser {
 
   void enqueue(EdgeHandle e, double cost) {
     state_.cost[idx(e)] = cost;
-    if (heap_.is_stored(e.idx()))
-      heap_.update(e.idx());
-    else
-      heap_.insert(e.idx());
+    heap_.set(e.idx(), cost);
   }
 
   // Bending: the lower bound times the bending-energy shape factor. Distance: the placement.
@@ -415,7 +401,7 @@ class Collapser {
   EdgeQueueState state_;
   std::vector<double> quadric_cost_;  // Q(p) / L^2 at the edge's placement
   std::vector<double> shape_;         // Jhat, the dimensionless bending energy, as last computed
-  OpenMesh::Utils::HeapT<int, EdgeHeapInterface> heap_{EdgeHeapInterface{&state_}};
+  IndexedHeap heap_{mesh_.n_edges()};
   std::vector<Vec3> neighbourhood_;
   std::vector<EdgeHandle> touched_;
   VertexHandle last_kept_;
