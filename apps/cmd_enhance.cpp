@@ -18,6 +18,7 @@ namespace {
 
 struct EnhanceOptions {
   std::string input, output, reference, json;
+  std::string max_deviation = "auto";
   EnhanceParams params;
   std::size_t samples = QualityParams().distance_samples;
   std::size_t threads = 0;
@@ -48,6 +49,7 @@ int run_enhance(EnhanceOptions o) {
     reference = std::make_unique<TriangleSoup>(read_soup(o.reference));
     if (reference->triangles.empty()) throw InvalidInput(o.reference + ": the reference has no faces");
   }
+  if (o.max_deviation != "auto") o.params.max_deviation = std::stod(o.max_deviation);
   ProgressBar bar("enhance");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const EnhanceResult result = enhance(loaded.mesh, reference.get(), o.params);
@@ -74,10 +76,12 @@ int run_enhance(EnhanceOptions o) {
   json["kept_round"] = result.kept_round;
   json["flips"] = result.flips;
   json["removed_vertices"] = result.removed_vertices;
+  json["split_edges"] = result.split_edges;
   json["line_vertices"] = result.line_vertices;
   json["fixed_vertices"] = result.fixed_vertices;
   json["undone_moves"] = result.undone_moves;
-  json["parameters"] = {{"max_deviation", o.params.max_deviation},
+  json["parameters"] = {{"max_deviation", result.max_deviation},
+                        {"max_deviation_auto", !o.params.max_deviation},
                         {"target_min_angle_deg", o.params.target_min_angle_deg},
                         {"feature_angle_deg", o.params.feature_angle_deg},
                         {"tail_k", o.params.tail_k},
@@ -113,10 +117,21 @@ Action add_enhance_command(CLI::App& app) {
   cmd->add_option("--iterations", o->params.iterations, "Rounds at most (statistic, flips, Ceres solve, projection)")
       ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
       ->capture_default_str();
-  cmd->add_option("--max-deviation", o->params.max_deviation,
+  cmd->add_option("--max-deviation", o->max_deviation,
                   "A face may not move farther than this fraction of the bounding-box diagonal from the reference "
-                  "(unless it already was)")
-      ->check(CLI::Range(1e-12, 1.0))
+                  "(unless it already was); auto: as far as the input already is from the reference (the "
+                  "enhancement is no less faithful than its input), at most 0.002, and 0.002 when it lies on it")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            if (value == "auto") return std::string();
+            try {
+              const double e = std::stod(value);
+              return e > 0 && e <= 1 ? std::string() : "must be in (0, 1] (or auto)";
+            } catch (const std::exception&) {
+              return "expected a number in (0, 1] or auto, not '" + value + "'";
+            }
+          },
+          "E|auto"))
       ->capture_default_str();
   cmd->add_option("--target-min-angle", o->params.target_min_angle_deg,
                   "Faces with a smaller angle (degrees) are always in the statistic's bad tail")

@@ -98,7 +98,8 @@ int run_simplify(const SimplifyOptions& o) {
     json["enhance"] = {{"stages", result.enhance_stages},
                        {"rounds", result.enhance_rounds},
                        {"flips", result.enhance_flips},
-                       {"removed_vertices", result.enhance_removed_vertices}};
+                       {"removed_vertices", result.enhance_removed_vertices},
+                       {"split_edges", result.enhance_split_edges}};
   json["input_topology"] = input_topology;
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);

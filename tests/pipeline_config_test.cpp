@@ -27,7 +27,6 @@ std::string error_of(const Json& json) {
 TEST(PipelineConfig, DefaultsAreTheStagesOwnWhereTheHeaderSaysSo) {
   const PipelineConfig c;
   EXPECT_EQ(c.simplify.params.min_angle_deg, SimplifyParams().min_angle_deg);
-  EXPECT_EQ(c.enhance.params.max_deviation, EnhanceParams().max_deviation);
   EXPECT_EQ(c.enhance.params.tail_k, EnhanceParams().tail_k);
   EXPECT_EQ(c.tetrahedralize.params.radius_edge, TetParams().radius_edge);
   EXPECT_EQ(c.reconstruct.params.fit.neighbors, PartitionOfUnityParams().neighbors);
@@ -37,6 +36,8 @@ TEST(PipelineConfig, DefaultsAreTheStagesOwnWhereTheHeaderSaysSo) {
   EXPECT_TRUE(c.smooth.params.preserve_volume);
   EXPECT_FALSE(c.simplify.ratio.has_value());
   EXPECT_EQ(c.quality.params.distance_samples, 200000u);
+  EXPECT_FALSE(EnhanceParams().max_deviation.has_value());  // enhance: the input's own distance
+  EXPECT_EQ(c.enhance.params.max_deviation, 2e-3);
 }
 
 TEST(PipelineConfig, TheEffectiveConfigurationReadsBackToItself) {

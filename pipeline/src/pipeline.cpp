@@ -250,6 +250,7 @@ class Run {
                       {"kept_round", e.kept_round},
                       {"flips", e.flips},
                       {"removed_vertices", e.removed_vertices},
+                      {"split_edges", e.split_edges},
                       {"smallest_angle_before_deg", e.before.min_angle_deg},
                       {"smallest_angle_after_deg", e.after.min_angle_deg}};
     record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";

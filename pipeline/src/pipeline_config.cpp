@@ -230,8 +230,19 @@ std::vector<Key> enhance_keys(PipelineConfig::Enhance& e) {
   std::vector<Key> keys;
   keys.push_back(flag("enhance", "enabled", e.enabled, "the statistical triangle enhancement against the input"));
   keys.push_back(count("enhance", "iterations", p.iterations, 1, 1000, "rounds at most"));
-  keys.push_back(number("enhance", "max_deviation", p.max_deviation, 0, 1, true,
-                        "a face may not move farther than this / bounding-box diagonal from the input surface"));
+  keys.push_back({"enhance", "max_deviation", "number in (0, 1] or \"auto\"",
+                  "a face may not move farther than this / bounding-box diagonal from the input surface; auto: as "
+                  "far as the simplified surface already is, at most 0.002",
+                  [&p](const Json& v) {
+                    if (v.is_string() && v.get<std::string>() == "auto") {
+                      p.max_deviation.reset();
+                      return;
+                    }
+                    if (!v.is_number() || !(v.get<double>() > 0 && v.get<double>() <= 1))
+                      throw BadValue{"expected a number in (0, 1] or \"auto\", not " + shown(v)};
+                    p.max_deviation = v.get<double>();
+                  },
+                  [&p] { return p.max_deviation ? OrderedJson(*p.max_deviation) : OrderedJson("auto"); }});
   keys.push_back(number("enhance", "target_min_angle_deg", p.target_min_angle_deg, 1, 59, false,
                         "faces with a smaller angle (degrees) are always in the bad tail"));
   keys.push_back(number("enhance", "feature_angle_deg", p.feature_angle_deg, 1, 180, false,

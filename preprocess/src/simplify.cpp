@@ -230,6 +230,7 @@ SimplifyResult simplify_and_enhance(TriMesh& mesh, const SimplifyParams& params)
     total.enhance_rounds += e.kept_round;
     total.enhance_flips += e.flips;
     total.enhance_removed_vertices += e.removed_vertices;
+    total.enhance_split_edges += e.split_edges;
     if (params.progress) params.progress(static_cast<double>(s) / kEnhanceStages);
   }
   total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

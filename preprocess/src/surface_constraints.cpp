@@ -176,6 +176,19 @@ std::pair<VertexHandle, VertexHandle> SurfaceConstraints::line_neighbours(Vertex
   return {ends[0], ends[1]};
 }
 
+TriMesh::VertexHandle SurfaceConstraints::split_surface_edge(EdgeHandle e) {
+  const auto h = mesh_.halfedge_handle(e, 0);
+  const Vec3 middle = 0.5 * (point(mesh_, mesh_.from_vertex_handle(h)) + point(mesh_, mesh_.to_vertex_handle(h)));
+  const VertexHandle m = mesh_.add_vertex(to_openmesh(middle));
+  mesh_.split(e, m);
+  mesh_.property(role_, m) = VertexRole::Surface;
+  mesh_.property(line_, m) = -1;
+  const TriangleBvh::Hit hit = bvh_.closest_point(middle);
+  mesh_.property(offset_, m) = (middle - hit.point).dot(reference_normal(hit.face));
+  for (const auto out : mesh_.voh_range(m)) mesh_.property(feature_, mesh_.edge_handle(out)) = 0;
+  return m;
+}
+
 Vec3 SurfaceConstraints::project(VertexHandle v, const Vec3& x) const {
   switch (role(v)) {
     case VertexRole::Surface: {

@@ -48,6 +48,9 @@ class SurfaceConstraints {
   /// segments of their run). Fixed vertices do not move; x is returned.
   Vec3 project(TriMesh::VertexHandle v, const Vec3& x) const;
 
+  /// Splits non-feature edge e at its midpoint, a new Surface vertex at its present distance from
+  /// the reference (so that relocation keeps it there). Returns the new vertex.
+  TriMesh::VertexHandle split_surface_edge(TriMesh::EdgeHandle e);
   /// Closest point of the reference surface to x.
   TriangleBvh::Hit closest_on_reference(const Vec3& x) const { return bvh_.closest_point(x); }
   const TriangleBvh& reference_bvh() const { return bvh_; }

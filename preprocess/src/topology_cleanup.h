@@ -1,7 +1,7 @@
 #pragma once
 // The topology changes of the enhancement (enhance.h, step 2), for where moving vertices alone
-// cannot help: edge flips, and collapses (valence-3 vertices, very short edges). Never across a feature, never
-// away from the surface.
+// cannot help: edge flips, collapses (valence-3 vertices, very short edges) and splits (a plane's
+// fans of needles). Never across a feature, never away from the surface.
 
 #include "surface_constraints.h"
 
@@ -36,5 +36,15 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
 /// the mesh is garbage-collected afterwards. Returns the vertices removed.
 std::size_t collapse_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules,
                                 std::size_t budget);
+
+/// Splits, at its midpoint, the longest edge of each face under the target angle where the two
+/// faces across that edge are coplanar (within 0.1 degrees: a CAD part's plane; a scan has no
+/// such place), the edge is no feature, and the two faces' worst angle does not get worse. The
+/// surface does not change; the relocation that follows moves the new vertex. This is for the
+/// fans of needles that decimation leaves on a part's planes (fandisk at 30 %: a vertex of
+/// valence 49), which no placement of their vertices can mend. At most `budget` splits (each adds
+/// two faces). Returns the splits made.
+std::size_t split_for_angles(TriMesh& mesh, SurfaceConstraints& constraints, const CleanupRules& rules,
+                             std::size_t budget);
 
 }  // namespace meshprep::detail

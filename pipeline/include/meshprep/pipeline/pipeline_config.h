@@ -59,7 +59,17 @@ struct PipelineConfig {
   } smooth;
   struct Enhance {
     bool enabled = true;
-    EnhanceParams params;
+    /// A fixed deviation bound, 2e-3 (`meshprep enhance`'s default is "auto", the input's own
+    /// distance from its reference): with the bound a simplified surface's distance, 9.4e-4 for the
+    /// corpus's reconstructed points, their copy translated to 1e9 ended with a largest radius
+    /// ratio of 2.5706 against 2.5705, where the pipeline promises the same figures to 1e-5, and
+    /// both worse than the 1.84 that 2e-3 gives.
+    EnhanceParams params = defaults();
+    static EnhanceParams defaults() {
+      EnhanceParams p;
+      p.max_deviation = 2e-3;
+      return p;
+    }
   } enhance;
   struct Quality {
     /// The final report's sampling; each stage's row uses a fifth of the samples. 200,000 per

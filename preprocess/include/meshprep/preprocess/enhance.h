@@ -19,14 +19,18 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 
 namespace meshprep {
 
 struct EnhanceParams {
   std::size_t iterations = 10;          ///< rounds at most (each: statistic, flips, Ceres, projection)
   /// A face's centroid may not move farther than this from the reference (relative to the
-  /// reference's bounding-box diagonal) unless it already was.
-  double max_deviation = 2e-3;
+  /// reference's bounding-box diagonal) unless it already was. Unset: the input's own Hausdorff
+  /// distance from the reference (sampled as the quality report does, rounded up to two digits),
+  /// so that the enhancement is no less faithful than its input, at most 2e-3; 2e-3 when the
+  /// input lies on its reference (no reference given, or the mesh itself).
+  std::optional<double> max_deviation;
   double target_min_angle_deg = 20;     ///< faces under this smallest angle are always in the tail
   double feature_angle_deg = 45;        ///< an edge with a larger dihedral angle is a crease; 180 = none
   bool flips = true;
@@ -54,6 +58,8 @@ struct EnhanceResult {
   std::size_t kept_round = 0;           ///< the round whose mesh was kept (0 = the input)
   std::size_t flips = 0;
   std::size_t removed_vertices = 0;     ///< of valence 3 (two faces each)
+  std::size_t split_edges = 0;          ///< on a plane, under needles (two faces each)
+  double max_deviation = 0;             ///< the bound used, relative to the reference's diagonal
   std::size_t line_vertices = 0;        ///< on a crease or the boundary: slid along it
   std::size_t fixed_vertices = 0;       ///< corners and non-manifold vertices: kept
   std::size_t undone_moves = 0;         ///< vertex moves taken back by the guards

@@ -77,7 +77,8 @@ struct SimplifyResult {
   std::size_t intersection_retries = 0;  ///< restarts with a tighter error cap where the output crossed itself
   std::size_t reshapes = 0;  ///< relaxation sweeps between collapses (each time the face count halved)
   std::size_t stuck_restarts = 0;  ///< queue restarts after flips and relaxation freed collapses the shape guard refused
-  std::size_t enhance_stages = 0, enhance_rounds = 0, enhance_flips = 0, enhance_removed_vertices = 0;
+  std::size_t enhance_stages = 0, enhance_rounds = 0, enhance_flips = 0, enhance_removed_vertices = 0,
+              enhance_split_edges = 0;
 };
 
 /// Simplify `mesh` in place (garbage-collected on return).
