@@ -61,7 +61,8 @@ std::vector<double> tail_weights(const TriMesh& mesh, const EnhanceParams& param
 }
 
 bool improves(const QualityTail& now, const QualityTail& best, double target_min_angle_deg) {
-  if (now.min_angle_deg < std::min(best.min_angle_deg, target_min_angle_deg) - 1e-9) return false;
+  const double kept = std::min(best.min_angle_deg, target_min_angle_deg);
+  if (kept >= 0.5 * target_min_angle_deg && now.min_angle_deg < kept - 1e-9) return false;
   if (now.under_target_fraction != best.under_target_fraction) return now.under_target_fraction < best.under_target_fraction;
   return now.q_p05 > best.q_p05 + 0.01 * (1 - best.q_p05);
 }
