@@ -1,6 +1,7 @@
 #include "edge_collapse.h"
 
 #include "collapse_energy_block.h"
+#include "edge_lengths.h"
 #include "indexed_heap.h"
 #include "triangle_angles.h"
 
@@ -417,10 +418,7 @@ double median(std::vector<double> values) {
 
 CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost) {
   CollapseScales scales;
-  std::vector<double> lengths;
-  lengths.reserve(mesh.n_edges());
-  for (const EdgeHandle e : mesh.edges()) lengths.push_back(mesh.calc_edge_length(e));
-  scales.edge_length = median(lengths);
+  scales.edge_length = median_edge_length(mesh);
   if (!(scales.edge_length > 0)) throw InvalidInput("the mesh's edges have zero length");
   Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (const VertexHandle v : mesh.vertices()) {

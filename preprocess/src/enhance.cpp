@@ -14,6 +14,7 @@
 #include "meshprep/quality/surface_distance.h"
 #include "meshprep/quality/triangle_bvh.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -97,10 +98,11 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   detail::SurfaceConstraints constraints(mesh, surface, params.feature_angle_deg);
   const double diagonal = bounding_box(surface).diagonal().norm();
   const std::vector<TriangleBvh::Hit> coverage = detail::reference_coverage(mesh, surface);
-  double relative_deviation =
-      params.max_deviation ? *params.max_deviation : input_deviation(input, reference ? &surface : nullptr, diagonal);
-  if (!params.max_deviation && !(relative_deviation > kOnReference && relative_deviation < kLoosest))
-    relative_deviation = kLoosest;
+  double relative_deviation = kLoosest;
+  if (params.max_deviation)
+    relative_deviation = *params.max_deviation;
+  else if (const double own = input_deviation(input, reference ? &surface : nullptr, diagonal); own > kOnReference)
+    relative_deviation = std::min(own, kLoosest);
   const double max_deviation = relative_deviation * diagonal;
   const std::size_t allowed_intersections = find_self_intersections(input).count;
   // Each removed vertex takes two faces with it, each split adds two: the count stays within

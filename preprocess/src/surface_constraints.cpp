@@ -1,5 +1,7 @@
 #include "surface_constraints.h"
 
+#include "edge_lengths.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -33,13 +35,6 @@ VertexHandle other_end(const TriMesh& mesh, EdgeHandle e, VertexHandle v) {
   return a == v ? mesh.to_vertex_handle(mesh.halfedge_handle(e, 1)) : a;
 }
 
-Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  if (!(length2 > 0)) return a;
-  return a + std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) * ab;
-}
-
 struct UnionFind {
   std::vector<std::size_t> parent;
   explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
@@ -67,15 +62,6 @@ bool straight_through(const TriMesh& mesh, VertexHandle v, const std::vector<Edg
   const Vec3 x = point(mesh, v);
   const Vec3 a = point(mesh, other_end(mesh, edges[0], v)) - x, b = point(mesh, other_end(mesh, edges[1], v)) - x;
   return a.dot(b) <= cosine * a.norm() * b.norm();
-}
-
-double median_edge_length(const TriMesh& mesh) {
-  std::vector<double> lengths;
-  lengths.reserve(mesh.n_edges());
-  for (const auto e : mesh.edges()) lengths.push_back(mesh.calc_edge_length(e));
-  if (lengths.empty()) return 0;
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
-  return lengths[lengths.size() / 2];
 }
 
 // Sharp interior edges that belong to a run at least kShortestCrease median edge lengths long:
@@ -199,7 +185,7 @@ Vec3 SurfaceConstraints::project(VertexHandle v, const Vec3& x) const {
       Vec3 best = x;
       double best_distance = INFINITY;
       for (const Segment& s : lines_[static_cast<std::size_t>(mesh_.property(line_, v))]) {
-        const Vec3 p = closest_on_segment(x, s.a, s.b);
+        const Vec3 p = closest_point_on_segment(x, s.a, s.b);
         const double d = (p - x).squaredNorm();
         if (d < best_distance) best_distance = d, best = p;
       }

@@ -29,13 +29,6 @@ double distance_to_patch(const Vec3& p, const std::vector<Corners>& faces) {
   return std::sqrt(nearest);
 }
 
-double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 // Whether replacing a patch of faces (`before`, bounded by the `rim` segments) by `after` (the
 // same rim) keeps every reference vertex under the patch within max(limit, its distance before).
 // The new faces' own points can all lie on the reference while the reference is uncovered: a
@@ -61,7 +54,7 @@ bool keeps_reference_covered(const SurfaceConstraints& constraints, const std::v
       const double old_distance = distance_to_patch(p, before);
       if (old_distance > limit) continue;
       double to_rim = INFINITY;
-      for (const auto& [a, b] : rim) to_rim = std::min(to_rim, distance_to_segment(p, a, b));
+      for (const auto& [a, b] : rim) to_rim = std::min(to_rim, (closest_point_on_segment(p, a, b) - p).norm());
       if (to_rim <= old_distance) continue;
       if (distance_to_patch(p, after) > limit) covered = false;
     }

@@ -50,6 +50,13 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   return a + ab * (vb / denom) + ac * (vc / denom);
 }
 
+Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  if (!(length2 > 0)) return a;
+  return a + std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) * ab;
+}
+
 TriangleBvh::TriangleBvh(const TriangleSoup& soup) : soup_(soup) {
   const auto n = static_cast<std::uint32_t>(soup.triangles.size());
   boxes_.resize(n);

@@ -20,6 +20,9 @@ Box3 bounding_box(const TriangleSoup& soup);
 /// Closest point on triangle (a, b, c) to p (exact, Ericson's region classification).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Closest point on segment [a, b] to p (a if the segment has no length).
+Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
+
 class TriangleBvh {
  public:
   /// Builds the hierarchy over every triangle of `soup` (the soup must outlive the BVH).
