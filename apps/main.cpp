@@ -1,5 +1,6 @@
 // meshprep: FEM-ready surface and tetrahedral meshes with a clear report, in one command.
 #include "cli_common.h"
+#include "heap_policy.h"
 #include "interrupt.h"
 
 #include "meshprep/core/errors.h"
@@ -10,6 +11,7 @@
 using namespace meshprep;
 
 int main(int argc, char** argv) {
+  cli::keep_freed_memory_for_reuse();
   CLI::App app{"meshprep " MESHPREP_VERSION
                " - turn raw geometry into meshes a finite-element solver can trust.\n"
                "Exit codes: 0 success, 1 the work could not be done (with the reason), 2 bad usage or unreadable input.",
