@@ -1,4 +1,5 @@
 #include "../preprocess/src/indexed_heap.h"
+#include "../preprocess/src/link_condition.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/simplify.h"
@@ -326,4 +327,37 @@ TEST(IndexedHeap, ExtractsByKeyThenIdWhateverTheUpdates) {
   heap.clear();
   EXPECT_TRUE(heap.empty());
   EXPECT_FALSE(heap.contains(3));
+}
+
+TEST(LinkCondition, AgreesWithOpenMeshOnEveryHalfedgeThroughRandomCollapses) {
+  // The collapse loop's inline link condition must decide exactly as OpenMesh's is_collapse_ok:
+  // closed meshes, boundaries, a tetrahedron (every collapse refused), a two-triangle strip (faces
+  // with two boundary sides), and meshes with deleted elements after random collapses.
+  const TriangleSoup shapes[] = {test::icosphere(2), test::torus(12, 8), test::grid(6), spherical_cap(4, 8),
+                                 test::regular_tetrahedron(), test::grid(1)};
+  std::mt19937 random(11);
+  for (const TriangleSoup& shape : shapes) {
+    TriMesh mesh = mesh_from_soup(shape);
+    mesh.request_vertex_status();
+    mesh.request_edge_status();
+    mesh.request_face_status();
+    mesh.request_halfedge_status();
+    detail::LinkCondition link(mesh);
+    std::size_t refused = 0, allowed = 0;
+    for (int step = 0; step < 40; ++step) {
+      std::vector<TriMesh::HalfedgeHandle> collapsible;
+      for (const auto h : mesh.halfedges()) {
+        const bool expected = mesh.is_collapse_ok(h);
+        ASSERT_EQ(link.holds(h), expected) << "step " << step << ", halfedge " << h.idx();
+        if (expected) collapsible.push_back(h);
+        (expected ? allowed : refused) += 1;
+      }
+      if (collapsible.empty()) break;
+      mesh.collapse(collapsible[std::uniform_int_distribution<std::size_t>(0, collapsible.size() - 1)(random)]);
+    }
+    EXPECT_GT(refused, 0u);
+    if (shape.triangles.size() > 4) {
+      EXPECT_GT(allowed, 0u);
+    }
+  }
 }

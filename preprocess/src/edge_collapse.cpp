@@ -3,6 +3,7 @@
 #include "collapse_energy_block.h"
 #include "edge_lengths.h"
 #include "indexed_heap.h"
+#include "link_condition.h"
 #include "triangle_angles.h"
 
 #include "meshprep/core/errors.h"
@@ -350,10 +351,10 @@ class Collapser {
     const VertexHandle pinned = pinned_end(a, b);
     if (pinned.is_valid()) {
       const HalfedgeHandle h = pinned == b ? h0 : h1;
-      return mesh_.is_collapse_ok(h) ? h : HalfedgeHandle();
+      return link_.holds(h) ? h : HalfedgeHandle();
     }
-    if (mesh_.is_collapse_ok(h0)) return h0;
-    if (mesh_.is_collapse_ok(h1)) return h1;
+    if (link_.holds(h0)) return h0;
+    if (link_.holds(h1)) return h1;
     return HalfedgeHandle();
   }
 
@@ -405,6 +406,7 @@ class Collapser {
   std::size_t reshape_at_ = 0;  // face count of the next relaxation
   std::size_t faces_before_ = 0, faces_ = 0, to_remove_ = 0;
   RingUnion rings_{mesh_};
+  LinkCondition link_{mesh_};
 };
 
 double median(std::vector<double> values) {
