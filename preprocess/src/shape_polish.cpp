@@ -84,7 +84,7 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
       normal += area_normal(point(mesh, mesh.from_vertex_handle(h)), point(mesh, mesh.to_vertex_handle(h)),
                             point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
     }
-    if (!(normal.norm() > 0) || on_feature(mesh, v, ring)) continue;
+    if (!(normal.norm() > 0)) continue;
     normal.normalize();
     const Vec3 tangential = centroid - normal * normal.dot(centroid - x);
     const Quadric& q = quadrics[static_cast<std::size_t>(v.idx())];
@@ -93,6 +93,8 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
     if (error > tolerance && error > rms_plane_distance(q, x)) continue;
     const VertexMove move = vertex_move(mesh, v, y, kTurnCosine);
     if (move.turns || !(move.new_cosine < move.old_cosine)) continue;
+    // Last, as the dearest test (a PCA with an eigen-solve): most vertices fail one of the above.
+    if (on_feature(mesh, v, ring)) continue;
     mesh.set_point(v, to_openmesh(y));
     ++moves;
   }
