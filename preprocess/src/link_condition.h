@@ -2,11 +2,12 @@
 // The link condition of an edge collapse (Dey et al. 1999; the test of OpenMesh's
 // TriConnectivity::is_collapse_ok), for the collapse loop's hot path. Debian's OpenMesh library is
 // built with its assertions on: each status() inside is_collapse_ok builds and compares a
-// 35-character type name on the heap, which made one call 590 ns on bunny00 (perf: 11 % of the
-// collapse loop). This inline version marks the 1-ring with a stamp instead of status tags.
+// 35-character type name on the heap, which made one call 627 ns on bunny00 (perf: 11 % of the
+// collapse loop). This inline version marks the 1-ring with a stamp instead of status tags: 98 ns.
 
 #include "meshprep/core/mesh.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace meshprep::detail {
