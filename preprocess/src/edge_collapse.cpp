@@ -5,6 +5,7 @@
 #include "indexed_heap.h"
 #include "link_condition.h"
 #include "triangle_angles.h"
+#include "vertex_marks.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/local_height_map.h"
@@ -52,25 +53,24 @@ struct EdgeRecord {
 };
 
 // Gathers the centres of an edge's local spline: its end points (indices 0 and 1), then the union
-// of their 1-rings, de-duplicated with a per-vertex stamp (no search).
+// of their 1-rings, de-duplicated with vertex marks (no search).
 class RingUnion {
  public:
-  explicit RingUnion(const TriMesh& mesh) : mesh_(mesh), stamp_(mesh.n_vertices(), 0) {}
+  explicit RingUnion(const TriMesh& mesh) : mesh_(mesh), seen_(mesh.n_vertices()) {}
 
   // Returns the count, or 0 if there are more than kMaxBlockCentres.
   int gather(VertexHandle a, VertexHandle b, Vec3* centres) {
-    ++current_;
+    seen_.clear_all();
     int n = 0;
     for (const VertexHandle end : {a, b}) {
-      stamp_[static_cast<std::size_t>(end.idx())] = current_;
+      seen_.mark(end);
       centres[n++] = to_eigen(mesh_.point(end));
     }
     for (const VertexHandle end : {a, b}) {
       for (const VertexHandle w : mesh_.vv_range(end)) {
-        unsigned& seen = stamp_[static_cast<std::size_t>(w.idx())];
-        if (seen == current_) continue;
+        if (seen_.marked(w)) continue;
         if (n == kMaxBlockCentres) return 0;
-        seen = current_;
+        seen_.mark(w);
         centres[n++] = to_eigen(mesh_.point(w));
       }
     }
@@ -79,8 +79,7 @@ class RingUnion {
 
  private:
   const TriMesh& mesh_;
-  std::vector<unsigned> stamp_;
-  unsigned current_ = 0;
+  VertexMarks seen_;
 };
 
 // J(s*) of the edge's optimal point on its line (sliding_landmarks.h); NaN when the spline is
@@ -342,20 +341,14 @@ class Collapser {
     return energy.point;
   }
 
-  // The halfedge to collapse (from the removed vertex to the kept one), invalid if neither
-  // direction passes the link condition or a boundary vertex would leave the boundary.
+  // The halfedge to collapse (from the removed vertex to the kept one), invalid if the link
+  // condition fails (it is the same in both directions) or a boundary vertex would leave the boundary.
   HalfedgeHandle collapse_direction(EdgeHandle e) {
     const HalfedgeHandle h0 = mesh_.halfedge_handle(e, 0), h1 = mesh_.halfedge_handle(e, 1);
     const VertexHandle a = mesh_.from_vertex_handle(h0), b = mesh_.to_vertex_handle(h0);
     if (locked_[idx(a)] || locked_[idx(b)]) return HalfedgeHandle();
-    const VertexHandle pinned = pinned_end(a, b);
-    if (pinned.is_valid()) {
-      const HalfedgeHandle h = pinned == b ? h0 : h1;
-      return link_.holds(h) ? h : HalfedgeHandle();
-    }
-    if (link_.holds(h0)) return h0;
-    if (link_.holds(h1)) return h1;
-    return HalfedgeHandle();
+    const HalfedgeHandle h = pinned_end(a, b) == a ? h1 : h0;  // a pinned boundary vertex stays
+    return link_.holds(h) ? h : HalfedgeHandle();
   }
 
   // The faces that survive the collapse of h with its vertices at p: none may flip by more than
