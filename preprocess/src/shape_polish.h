@@ -3,6 +3,7 @@
 // the surface stays where the quadrics say the original was.
 
 #include "collapse_quadrics.h"
+#include "vertex_relaxation.h"
 
 #include "meshprep/core/mesh.h"
 
@@ -18,11 +19,11 @@ struct PolishCounts {
 /// One round of (1) flips of nearly flat interior edges (both dihedral angles, before and
 /// after, under 10 degrees) that raise the smaller of the two faces' smallest angles and whose
 /// two diagonals lie within `tolerance` of each other along the normal; then (2) a Gauss-Seidel
-/// sweep moving each interior manifold vertex that is not on a feature (surface variation sigma
-/// of its 1-ring over that of a 30-degree crease) to its 1-ring centroid in its tangent plane, then
-/// along its normal to the minimum of its quadric, kept only if the smallest angle around it
-/// improves, no face turns by more than 60 degrees, and the quadric's RMS plane distance stays
-/// under `tolerance` (or does not grow). Without `flips`, only (2).
-PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, bool flips = true);
+/// sweep over the vertices (those of the `tail`'s faces; all if it is null) not on a feature: each moves
+/// towards its 1-ring centroid in its tangent plane, the step halved until the quadric's RMS plane
+/// distance is under `tolerance` (or no larger than before), kept only if the smallest angle
+/// around it improves and no face turns by more than 60 degrees. Without `flips`, only (2).
+PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, bool flips,
+                          const ShapeTail* tail);
 
 }  // namespace meshprep::detail
