@@ -69,31 +69,29 @@ TEST(SharedSimplify, Bunny10Percent) {
   SKIP_WITHOUT_SHARED_DATA();
   const Simplified s = simplify_shared("bunny00.off", 0.1);
   expect_valid(s);
-  EXPECT_LE(s.output.reference->hausdorff_relative, 1.55e-3);  // goal: 1.25 x CGAL GH's 1.24e-3 (measured 1.39e-3)
-  EXPECT_LE(s.output.reference->rms_relative, 1.92e-4);  // goal 1.55e-4 NOT met: measured 1.80e-4
+  EXPECT_LE(s.output.reference->hausdorff_relative, 1.55e-3);  // goal: 1.25 x CGAL GH's 1.24e-3 (measured 1.25e-3)
+  EXPECT_LE(s.output.reference->rms_relative, 1.55e-4);  // goal: 1.25 x CGAL LT's 1.24e-4 (measured 1.54e-4)
   EXPECT_LE(s.output.faces_min_angle_below_20, 0.05);  // goal; measured 0
-  EXPECT_LE(s.output.radius_ratio.p95, 2.05);  // goal 2.0; measured 1.96-2.00
+  EXPECT_LE(s.output.radius_ratio.p95, 2.0);  // goal; measured 1.88
 }
 
 TEST(SharedSimplify, Bunny30Percent) {
   SKIP_WITHOUT_SHARED_DATA();
   const Simplified s = simplify_shared("bunny00.off", 0.3);
   expect_valid(s);
-  // goal 5.1e-4 (1.25 x CGAL GH's 4.1e-4) missed by 2 %: measured 5.2e-4 (4.7e-4 when the vertices
-  // were processed in the file's order: a maximum moves with the order of equal-cost collapses)
-  EXPECT_LE(s.output.reference->hausdorff_relative, 5.6e-4);
-  EXPECT_LE(s.output.reference->rms_relative, 6.6e-5);  // goal 5.5e-5 NOT met: measured 6.1e-5
+  EXPECT_LE(s.output.reference->hausdorff_relative, 5.125e-4);  // goal: 1.25 x CGAL GH's 4.1e-4 (measured 4.64e-4)
+  EXPECT_LE(s.output.reference->rms_relative, 5.5e-5);  // goal: 1.25 x CGAL LT's 0.44e-4 (measured 5.41e-5)
   EXPECT_LE(s.output.faces_min_angle_below_20, 0.05);
-  EXPECT_LE(s.output.radius_ratio.p95, 2.0);  // goal; measured 1.89
+  EXPECT_LE(s.output.radius_ratio.p95, 2.0);  // goal; measured 1.85
 }
 
 TEST(SharedSimplify, Fandisk30PercentKeepsItsSharpEdges) {
   SKIP_WITHOUT_SHARED_DATA();
   const Simplified s = simplify_shared("fandisk.off", 0.3);
   expect_valid(s);
-  EXPECT_LE(s.output.reference->hausdorff_relative, 1.0e-3);  // goal; measured 1.3e-4
+  EXPECT_LE(s.output.reference->hausdorff_relative, 1.0e-3);  // goal; measured 1.25e-4
   EXPECT_LE(s.output.faces_min_angle_below_20, 0.05);
-  EXPECT_LE(s.output.radius_ratio.p95, 2.0);  // measured 1.97
+  EXPECT_LE(s.output.radius_ratio.p95, 2.0);  // goal; measured 1.99
   const TriangleSoup input = load_mesh((kMeshes / "fandisk.off").string()).soup;
   // Every sharp edge survives as a chain of sharp edges of the same total length (measured:
   // 8.8906 -> 8.8904 diagonals); a rounded or chamfered crease would lose length.
