@@ -381,26 +381,24 @@ class Collapser {
   bool shape_ok(HalfedgeHandle h, const Vec3& p) const {
     const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
     double old_cosine = -1, new_cosine = -1;
+    // Each face once, walked from its corner at an end point (halfedges, not nested circulators:
+    // this runs for every collapse tried, refused or not).
     for (const VertexHandle end : {removed, kept}) {
-      for (const auto f : mesh_.vf_range(end)) {
-        Vec3 before[3], after[3];
-        int k = 0;
-        bool has_removed = false, has_kept = false;
-        for (const VertexHandle w : mesh_.fv_range(f)) {
-          before[k] = point(w);
-          has_removed |= w == removed;
-          has_kept |= w == kept;
-          after[k++] = (w == removed || w == kept) ? p : point(w);
-        }
-        old_cosine = std::max(old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
-        if (has_removed && has_kept) continue;  // one of the two faces the collapse deletes
-        const Vec3 n0 = area_normal(before[0], before[1], before[2]);
-        const Vec3 n1 = area_normal(after[0], after[1], after[2]);
-        const double perimeter = (after[1] - after[0]).norm() + (after[2] - after[1]).norm() +
-                                 (after[0] - after[2]).norm();
+      const VertexHandle other = end == removed ? kept : removed;
+      const Vec3 at = point(end);
+      for (const HalfedgeHandle out : mesh_.voh_range(end)) {
+        if (mesh_.is_boundary(out)) continue;  // no face on this side
+        const VertexHandle b = mesh_.to_vertex_handle(out), c = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(out));
+        const bool deleted = b == other || c == other;  // one of the two faces the collapse deletes
+        if (deleted && end == kept) continue;          // already seen from `removed`
+        const Vec3 pb = point(b), pc = point(c);
+        old_cosine = std::max(old_cosine, smallest_angle_cosine(at, pb, pc));
+        if (deleted) continue;
+        const Vec3 n0 = area_normal(at, pb, pc), n1 = area_normal(p, pb, pc);
+        const double perimeter = (pb - p).norm() + (pc - pb).norm() + (p - pc).norm();
         if (!(n1.norm() > kDegenerateArea * perimeter * perimeter)) return false;
         if (n0.dot(n1) <= 0) return false;
-        new_cosine = std::max(new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
+        new_cosine = std::max(new_cosine, smallest_angle_cosine(p, pb, pc));
       }
     }
     return new_cosine <= std::max(min_angle_cosine_, old_cosine) + 1e-12;
