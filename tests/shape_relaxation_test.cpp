@@ -1,7 +1,5 @@
-// The shape steps after the collapses: the radius ratio they aim at and the relaxation on the
-// original surface (preprocess/src/reference_relaxation.h).
+// The relaxation on the original surface after the collapses (preprocess/src/reference_relaxation.h).
 #include "../preprocess/src/reference_relaxation.h"
-#include "../preprocess/src/triangle_angles.h"
 #include "../preprocess/src/vertex_relaxation.h"
 
 #include "meshprep/quality/triangle_bvh.h"
@@ -11,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 
 namespace meshprep {
 namespace {
@@ -25,14 +22,7 @@ TriMesh::VertexHandle vertex_at(const TriMesh& mesh, const Vec3& p) {
 }
 
 double worst_ratio_around(const TriMesh& mesh, TriMesh::VertexHandle v) {
-  return detail::vertex_move(mesh, v, to_eigen(mesh.point(v)), -1.0).old_ratio;
-}
-
-TEST(TriangleAngles, RadiusRatioIsOneForAnEquilateralTriangle) {
-  EXPECT_NEAR(detail::radius_ratio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, std::sqrt(3.0) / 2, 0)), 1.0, 1e-12);
-  // Right isosceles with unit legs: R = sqrt(2) / 2, r = (2 - sqrt(2)) / 2, R / 2r = (1 + sqrt(2)) / 2.
-  EXPECT_NEAR(detail::radius_ratio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)), (1 + std::sqrt(2.0)) / 2, 1e-12);
-  EXPECT_EQ(detail::radius_ratio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)), std::numeric_limits<double>::infinity());
+  return detail::worst_radius_ratio(mesh, v, to_eigen(mesh.point(v)));
 }
 
 TEST(ReferenceRelaxation, ATailVertexOfAPlaneEvensItsFacesAndStaysInThePlane) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace meshprep;
 
@@ -51,6 +52,13 @@ TEST(TriangleMetrics, DegenerateIsInfinite) {
   EXPECT_TRUE(std::isinf(s.aspect_ratio));
   EXPECT_NEAR(s.min_angle_deg, 0.0, 1e-12);
   EXPECT_NEAR(s.max_angle_deg, 180.0, 1e-12);
+}
+
+TEST(TriangleMetrics, RadiusRatioAloneMatchesTheKnownTriangles) {
+  EXPECT_NEAR(radius_ratio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, std::sqrt(3.0) / 2, 0)), 1.0, 1e-12);
+  // Right isosceles with unit legs: R = sqrt(2) / 2, r = (2 - sqrt(2)) / 2, R / 2r = (1 + sqrt(2)) / 2.
+  EXPECT_NEAR(radius_ratio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)), (1 + std::sqrt(2.0)) / 2, 1e-12);
+  EXPECT_EQ(radius_ratio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)), std::numeric_limits<double>::infinity());
 }
 
 TEST(TriangleMetrics, NeedleAngleIsAccurate) {

@@ -56,7 +56,8 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
     const TriangleBvh::Hit here = reference.closest_point(relax->from);
     if (!same_side(reference, here, relax->normal)) continue;
     const double offset = relax->normal.dot(relax->from - here.point);
-    std::optional<double> farthest_before;  // squared, at least tolerance^2
+    const double ratio_before = worst_radius_ratio(mesh, v, relax->from);
+    std::optional<double> bound;  // squared: the farthest sample's distance before, at least the tolerance
     for (double fraction = 1; fraction > kSmallestFraction; fraction *= 0.5) {
       const Vec3 target = relax->from + fraction * (relax->to - relax->from);
       const TriangleBvh::Hit on_surface = reference.closest_point(target);
@@ -65,18 +66,18 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
         continue;
       const Vec3 y = on_surface.point + offset * relax->normal;
       const VertexMove move = vertex_move(mesh, v, y, kTurnCosine);
-      if (move.turns || !(move.new_ratio < move.old_ratio) ||
+      if (move.turns || !(worst_radius_ratio(mesh, v, y) < ratio_before) ||
           move.new_cosine > std::max(min_angle_cosine, move.old_cosine))
         continue;
-      if (!farthest_before) {
+      if (!bound) {
         double farthest = 0;
         each_sample(mesh, v, relax->from, [&](const Vec3& p) {
           farthest = std::max(farthest, reference.closest_point(p).squared_distance);
           return true;
         });
-        farthest_before = std::max(tolerance * tolerance, farthest);
+        bound = std::max(tolerance * tolerance, farthest);
       }
-      const auto near = [&](const Vec3& p) { return reference.closest_point(p).squared_distance <= *farthest_before; };
+      const auto near = [&](const Vec3& p) { return reference.closest_point(p).squared_distance <= *bound; };
       if (!each_sample(mesh, v, y, near)) continue;
       mesh.set_point(v, to_openmesh(y));
       ++moves;

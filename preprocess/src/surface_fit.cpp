@@ -1,6 +1,7 @@
 #include "surface_fit.h"
 
 #include "triangle_angles.h"
+#include "vertex_relaxation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +40,7 @@ std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double
                              const std::vector<char>* movable) {
   std::size_t moved = 0;
   for (const VertexHandle v : mesh.vertices()) {
-    if (mesh.status(v).deleted() || mesh.is_boundary(v) || !mesh.is_manifold(v) || mesh.valence(v) < 3) continue;
+    if (!relaxable(mesh, v)) continue;
     if (movable && !(*movable)[static_cast<std::size_t>(v.idx())]) continue;
     const Vec3 x = point(mesh, v);
     double shortest = std::numeric_limits<double>::infinity();

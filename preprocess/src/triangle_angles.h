@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace meshprep::detail {
 
@@ -35,22 +34,11 @@ inline bool sharpens_into_fold(double before, double after) {
   return after < fold_cosine && after < before;
 }
 
-/// The radius ratio R / (2 r) of the quality report (1 for an equilateral triangle):
-/// |ab| |bc| |ca| (|ab| + |bc| + |ca|) / (16 area^2); infinity for a triangle without area.
-inline double radius_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double lab = (b - a).norm(), lbc = (c - b).norm(), lca = (a - c).norm();
-  const double twice_area_squared = area_normal(a, b, c).squaredNorm();
-  if (!(twice_area_squared > 0)) return std::numeric_limits<double>::infinity();
-  return lab * lbc * lca * (lab + lbc + lca) / (4.0 * twice_area_squared);
-}
-
 /// What moving vertex v to `moved_to` does to the faces around it.
 struct VertexMove {
   bool turns = false;       ///< a face normal turns by more than the angle whose cosine was given
   double old_cosine = -1;   ///< largest smallest_angle_cosine of the faces before the move
   double new_cosine = -1;   ///< and after (both meaningful only when !turns)
-  double old_ratio = 0;     ///< largest radius_ratio of the faces before the move
-  double new_ratio = 0;     ///< and after (likewise)
 };
 
 inline VertexMove vertex_move(const TriMesh& mesh, TriMesh::VertexHandle v, const Vec3& moved_to, double turn_cosine) {
@@ -70,8 +58,6 @@ inline VertexMove vertex_move(const TriMesh& mesh, TriMesh::VertexHandle v, cons
     }
     move.old_cosine = std::max(move.old_cosine, smallest_angle_cosine(before[0], before[1], before[2]));
     move.new_cosine = std::max(move.new_cosine, smallest_angle_cosine(after[0], after[1], after[2]));
-    move.old_ratio = std::max(move.old_ratio, radius_ratio(before[0], before[1], before[2]));
-    move.new_ratio = std::max(move.new_ratio, radius_ratio(after[0], after[1], after[2]));
   }
   return move;
 }

@@ -3,6 +3,7 @@
 #include "triangle_angles.h"
 
 #include "meshprep/preprocess/local_frame.h"
+#include "meshprep/quality/triangle_metrics.h"
 
 #include <algorithm>
 
@@ -29,6 +30,16 @@ bool in_tail(const TriMesh& mesh, TriMesh::VertexHandle v, const ShapeTail& tail
     if (radius_ratio(a, b, c) > tail.ratio || smallest_angle_cosine(a, b, c) > tail.min_angle_cosine) return true;
   }
   return false;
+}
+
+double worst_radius_ratio(const TriMesh& mesh, TriMesh::VertexHandle v, const Vec3& at) {
+  double worst = 0;
+  for (const auto h : mesh.voh_range(v)) {
+    if (mesh.is_boundary(h)) continue;
+    worst = std::max(worst, radius_ratio(at, point(mesh, mesh.to_vertex_handle(h)),
+                                         point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h)))));
+  }
+  return worst;
 }
 
 std::optional<TangentialMove> tangential_move(const TriMesh& mesh, TriMesh::VertexHandle v) {

@@ -20,11 +20,15 @@ struct ShapeTail {
   double min_angle_cosine = 1.0;
 };
 
-/// An interior manifold vertex of valence 3 or more that is not deleted.
+/// An interior manifold vertex of valence 3 or more that is not deleted: what the relaxations
+/// and the fit to the original (surface_fit.h) may move.
 bool relaxable(const TriMesh& mesh, TriMesh::VertexHandle v);
 
 /// Whether a face around v is in the tail.
 bool in_tail(const TriMesh& mesh, TriMesh::VertexHandle v, const ShapeTail& tail);
+
+/// The largest radius ratio of the faces around v with v at `at` (infinity if one has no area).
+double worst_radius_ratio(const TriMesh& mesh, TriMesh::VertexHandle v, const Vec3& at);
 
 /// Vertex v moved to the centroid of its 1-ring in its tangent plane (normal: the sum of its
 /// faces' area normals).

@@ -12,6 +12,7 @@
 
 #include "meshprep/core/mesh.h"
 
+#include <limits>
 #include <vector>
 
 namespace meshprep {
@@ -29,6 +30,14 @@ struct TriangleShape {
 
 /// Shape of the triangle (a, b, c).
 TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// TriangleShape::radius_ratio alone (no angles: for hot paths), +inf for a degenerate triangle.
+inline double radius_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double la = (b - a).norm(), lb = (c - b).norm(), lc = (a - c).norm();
+  const double area = 0.5 * (b - a).cross(c - a).norm();
+  if (!(area > 0)) return std::numeric_limits<double>::infinity();
+  return la * lb * lc * (la + lb + lc) / (16.0 * area * area);
+}
 
 /// Signed volume enclosed by the soup's faces, sum of (p0 - o) . ((p1 - o) x (p2 - o)) / 6 with o a
 /// corner of the first face (divergence theorem; o near the surface keeps the figure exact far
