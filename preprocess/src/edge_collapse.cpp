@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 
@@ -51,12 +52,15 @@ const double kThinFaceCosine = std::cos(20.0 * M_PI / 180.0);
 
 // Everything the queue keeps per edge, in one record: a collapse reads and writes it for a dozen
 // edges at scattered places of the mesh, one cache line each instead of one per array (at 1.2 M
-// faces the arrays did not fit in the cache). The heap holds a copy of each queued edge's cost.
-struct EdgeRecord {
+// faces the arrays did not fit in the cache), and exactly one. The heap holds a copy of each
+// queued edge's cost.
+struct alignas(64) EdgeRecord {
   double cost = 0;
   double quadric_cost = 0;  // dQ / L^2 (or Q(p) / L^2 beside thin faces) at the edge's placement
   double shape = 0;         // Jhat, the dimensionless bending energy, as last computed
   Vec3 placement = Vec3::Zero();
+  // The versions of the end points (from, to) the placement and quadric cost were computed for.
+  std::uint32_t from_version = 0, to_version = 0;
   unsigned char retries = 0;
   char complete = 0;  // 0: cost is a lower bound (quadric part only, or no placement yet)
 };
@@ -123,9 +127,11 @@ class Collapser {
         merged_into_(merged_into), result_(result),
         edges_(mesh.n_edges()),
         locked_(mesh.n_vertices(), 0),
+        version_(mesh.n_vertices()),
         whole_error_(mesh.n_vertices(), 0),
         min_angle_cosine_(params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 2.0) {
     for (const VertexHandle v : mesh_.vertices()) {
+      version_[idx(v)] = next_version_++;
       locked_[idx(v)] = !mesh_.is_manifold(v);
       whole_error_[idx(v)] = mesh_.is_boundary(v);
     }
@@ -151,12 +157,12 @@ class Collapser {
       run_queue(target);
       if (faces_ > target && faces_ <= reshape_at_) {
         reshape_at_ /= 2;
-        result_.reshapes += reshape(Reshape::Relax) ? 1 : 0;
+        result_.reshapes += reshaped(reshape, Reshape::Relax) ? 1 : 0;
         continue;
       }
       if (faces_ <= target || !reshape || restart == kMaxStuckRestarts) return;
       if (restart > 0 && result_.collapses == collapses_before) return;
-      if (!reshape(Reshape::FlipAndRelax)) return;
+      if (!reshaped(reshape, Reshape::FlipAndRelax)) return;
       ++result_.stuck_restarts;
       ++restart;
     }
@@ -164,6 +170,16 @@ class Collapser {
 
  private:
   enum class Outcome { Collapsed, Topology, Shape, Error };
+
+  // Calls `reshape`; the vertices it moved get new versions.
+  bool reshaped(const ReshapeCallback& reshape, Reshape how) {
+    const auto before = mesh_.points();  // (a copy: cheap next to a relaxation sweep)
+    const std::vector<OpenMesh::Vec3d> points_before(before, before + mesh_.n_vertices());
+    const bool changed = reshape(how);
+    for (const VertexHandle v : mesh_.vertices())
+      if (mesh_.point(v) != points_before[idx(v)]) version_[idx(v)] = next_version_++;
+    return changed;
+  }
 
   // The greedy order: always the cheapest edge next. (The paper's passes of independent sets were
   // measured slower and no better overall; docs/simplification.md.)
@@ -204,14 +220,26 @@ class Collapser {
   // had refused are tried again (bunny00 to 2,000 faces: RMS distance 8.3e-4 -> 7.3e-4). Not
   // beside the boundary: there, on the Jacksboro terrain, they made 6 of 4,000 border faces
   // turn past vertical (each collapse within the 90-degree guard, the sum not).
+  // The edges' records and heap slots are scattered over memory (at 1.2 M faces, far beyond the
+  // cache): they are all requested first, so that the misses overlap instead of queueing.
   void requeue_around(VertexHandle v) {
-    for (const EdgeHandle around : mesh_.ve_range(v)) push(around);
+    around_.clear();
+    links_.clear();
     for (const HalfedgeHandle out : mesh_.voh_range(v)) {
+      around_.push_back(mesh_.edge_handle(out));
       if (mesh_.is_boundary(out)) continue;
       const HalfedgeHandle link = mesh_.next_halfedge_handle(out);
       if (mesh_.is_boundary(mesh_.from_vertex_handle(link)) || mesh_.is_boundary(mesh_.to_vertex_handle(link))) continue;
-      if (!heap_.contains(mesh_.edge_handle(link).idx())) push(mesh_.edge_handle(link));
+      links_.push_back(mesh_.edge_handle(link));
     }
+    for (const std::vector<EdgeHandle>* edges : {&around_, &links_})
+      for (const EdgeHandle e : *edges) {
+        __builtin_prefetch(&edges_[idx(e)]);
+        heap_.prefetch(e.idx());
+      }
+    for (const EdgeHandle e : around_) push(e);
+    for (const EdgeHandle e : links_)
+      if (!heap_.contains(e.idx())) push(e);
   }
 
   // The guards, then the collapse of edge e onto its placement (last_kept_ is the vertex that stays).
@@ -244,6 +272,7 @@ class Collapser {
       for (const EdgeHandle around : mesh_.ve_range(end)) touched_.push_back(around);
     mesh_.collapse(h);
     mesh_.set_point(kept, to_openmesh(p));
+    version_[idx(kept)] = next_version_++;
     merged_into_[idx(removed)] = kept.idx();
     whole_error_[idx(kept)] |= whole_error_[idx(removed)];
     ++result_.collapses;
@@ -298,6 +327,15 @@ class Collapser {
       record.cost = length / scales_.edge_length;
       return true;
     }
+    // Neither end point has moved or merged since the placement was computed (the edge is queued
+    // again beside a collapse, or after a reshape): it still holds. A version is never reused, so
+    // this also tells an edge a flip has turned.
+    if (record.from_version == version_[idx(a)] && record.to_version == version_[idx(b)]) {
+      record.cost = bending_cost(record, length);
+      return true;
+    }
+    record.from_version = version_[idx(a)];
+    record.to_version = version_[idx(b)];
     Quadric q = quadrics_[idx(a)];
     q += quadrics_[idx(b)];
     const VertexHandle pinned = pinned_end(a, b);
@@ -413,11 +451,14 @@ class Collapser {
   SimplifyResult& result_;
   std::vector<EdgeRecord> edges_;
   std::vector<char> locked_;  // non-manifold vertices: never moved
+  // Changes each time a vertex moves or merges (unique over all vertices and times: never 0).
+  std::vector<std::uint32_t> version_;
+  std::uint32_t next_version_ = 1;
   std::vector<char> whole_error_;  // costed by Q(p): on the boundary, or standing for a thin face's corner
   double min_angle_cosine_;
   IndexedHeap heap_{mesh_.n_edges()};
   std::vector<Vec3> neighbourhood_;
-  std::vector<EdgeHandle> touched_;
+  std::vector<EdgeHandle> touched_, around_, links_;
   VertexHandle last_kept_;
   std::size_t reshape_at_ = 0;  // face count of the next relaxation
   std::size_t faces_before_ = 0, faces_ = 0, to_remove_ = 0;

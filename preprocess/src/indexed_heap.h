@@ -59,6 +59,9 @@ class IndexedHeap {
 
   void pop_front() { remove(front()); }
 
+  /// Asks the cache for id's slot ahead of a set() or contains() (the slots are read at random).
+  void prefetch(int id) const { __builtin_prefetch(&position_[index(id)]); }
+
   void clear() {
     for (const Entry& e : entries_) position_[index(e.id)] = kAbsent;
     entries_.clear();
