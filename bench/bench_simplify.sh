@@ -31,3 +31,26 @@ done
 # Scale: time per removed face at 1.2 M faces against 75 k (same cost, same ratio).
 "$build/bin/subdivide_mesh" "$data/bunny00.off" "$work/bunny_x16.off" 2
 for c in bending quadric; do row "$work/bunny_x16.off" 0.1 "$c" "bunny00 x16 (1.2 M)"; done
+
+# Single-threaded speed on bunny00 at 10 %: the goal compares bending with the quadric baseline
+# "in the same run", and one run of each is at the mercy of the machine's hour (a shared VM
+# swings by 30 %), so they alternate, RUNS pairs (default 8), and the medians are compared.
+runs=${RUNS:-8}
+for i in $(seq "$runs"); do
+  for c in bending quadric; do
+    "$bin" simplify "$data/bunny00.off" -o "$work/out.off" --ratio 0.1 --cost "$c" --threads 1 --samples 1000 \
+      --json "$work/speed.json" > /dev/null
+    python3 -c 'import json, sys; print(sys.argv[2], json.load(open(sys.argv[1]))["time_seconds"])' "$work/speed.json" "$c"
+  done
+done > "$work/speed.txt"
+python3 - "$work/speed.txt" <<'PY'
+import statistics, sys
+times = {"bending": [], "quadric": []}
+for line in open(sys.argv[1]):
+    cost, seconds = line.split()
+    times[cost].append(float(seconds))
+b, q = statistics.median(times["bending"]), statistics.median(times["quadric"])
+print()
+print("Single-threaded, bunny00 to 10 %%, %d alternating pairs: bending median %.3f s (fastest %.3f), "
+      "quadric median %.3f s; quadric / bending %.2f" % (len(times["bending"]), b, min(times["bending"]), q, q / b))
+PY
