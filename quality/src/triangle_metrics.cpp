@@ -32,7 +32,7 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
     return s;
   }
   const double perimeter = la + lb + lc;
-  s.radius_ratio = radius_ratio(a, b, c);  // R = abc/(4A), r = 2A/(a+b+c)  =>  R/(2r) = abc(a+b+c) / (16 A^2)
+  s.radius_ratio = radius_ratio_of(la, lb, lc, s.area);
   s.aspect_ratio = std::max({la, lb, lc}) * perimeter / (4.0 * std::sqrt(3.0) * s.area);
   return s;
 }

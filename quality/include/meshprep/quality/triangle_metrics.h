@@ -31,12 +31,16 @@ struct TriangleShape {
 /// Shape of the triangle (a, b, c).
 TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// R / (2 r) from the side lengths and the area (> 0): R = abc / (4A), r = 2A / (a + b + c).
+inline double radius_ratio_of(double la, double lb, double lc, double area) {
+  return la * lb * lc * (la + lb + lc) / (16.0 * area * area);
+}
+
 /// TriangleShape::radius_ratio alone (no angles: for hot paths), +inf for a degenerate triangle.
 inline double radius_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double la = (b - a).norm(), lb = (c - b).norm(), lc = (a - c).norm();
   const double area = 0.5 * (b - a).cross(c - a).norm();
   if (!(area > 0)) return std::numeric_limits<double>::infinity();
-  return la * lb * lc * (la + lb + lc) / (16.0 * area * area);
+  return radius_ratio_of((b - a).norm(), (c - b).norm(), (a - c).norm(), area);
 }
 
 /// Signed volume enclosed by the soup's faces, sum of (p0 - o) . ((p1 - o) x (p2 - o)) / 6 with o a
