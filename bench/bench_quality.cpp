@@ -4,6 +4,7 @@
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/topology.h"
+#include "meshprep/quality/triangle_bvh.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <benchmark/benchmark.h>
@@ -41,6 +42,13 @@ void topology(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(meshprep::analyze_topology(soup));
 }
 BENCHMARK(topology)->Unit(benchmark::kMillisecond);
+
+void bvh_build(benchmark::State& state) {
+  if (!have_data(state)) return;
+  const auto soup = meshprep::read_soup(kBunny);
+  for (auto _ : state) benchmark::DoNotOptimize(meshprep::TriangleBvh(soup));
+}
+BENCHMARK(bvh_build)->Unit(benchmark::kMillisecond);
 
 void self_intersections(benchmark::State& state) {
   if (!have_data(state)) return;

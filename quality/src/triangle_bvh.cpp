@@ -1,5 +1,6 @@
 #include "meshprep/quality/triangle_bvh.h"
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -11,6 +12,13 @@ namespace {
 constexpr std::uint32_t kLeafSize = 4;
 constexpr int kMaxDepth = 64;  // median splits: depth is log2(n / kLeafSize) + 1
 constexpr int kParallelDepth = 10;  // node pairs this deep in the self-traversal still fork
+constexpr int kParallelBuildDepth = 4;  // subtrees this deep are still built two at a time
+
+// Nodes of the subtree over m triangles: a leaf, or a node over two halves (floor(m / 2) left).
+// Where the build forks, the right subtree's place in the preorder is known before the left is built.
+std::uint32_t subtree_nodes(std::uint32_t m) {
+  return m <= kLeafSize ? 1 : 1 + subtree_nodes(m / 2) + subtree_nodes(m - m / 2);
+}
 
 }  // namespace
 
@@ -61,28 +69,30 @@ TriangleBvh::TriangleBvh(const TriangleSoup& soup) : soup_(soup) {
   const auto n = static_cast<std::uint32_t>(soup.triangles.size());
   boxes_.resize(n);
   std::vector<Vec3> centroids(n);
-  for (std::uint32_t f = 0; f < n; ++f) {
+  tbb::parallel_for(std::uint32_t(0), n, [&](std::uint32_t f) {
     boxes_[f].setEmpty();
     for (auto v : soup.triangles[f]) boxes_[f].extend(soup.points[v]);
     centroids[f] = boxes_[f].center();
-  }
+  });
   order_.resize(n);
   for (std::uint32_t f = 0; f < n; ++f) order_[f] = f;
-  nodes_.reserve(2 * (n / kLeafSize + 1));
-  if (n > 0) build(0, n, centroids);
+  if (n == 0) return;
+  nodes_.resize(subtree_nodes(n));
+  build(0, 0, n, centroids, 0);
 }
 
-std::uint32_t TriangleBvh::build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids) {
-  const auto index = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.emplace_back();
-  Box3 box;
-  box.setEmpty();
-  for (std::uint32_t i = begin; i < end; ++i) box.extend(boxes_[order_[i]]);
-  nodes_[index].box = box;
+// The subtree over order_[begin, end) into nodes_ from `index` on, in preorder (the node, its left
+// subtree, its right subtree); returns the index after it. A node's box is its children's
+// together: the same box as over all its triangles, from one pass per level fewer.
+std::uint32_t TriangleBvh::build(std::uint32_t index, std::uint32_t begin, std::uint32_t end,
+                                 const std::vector<Vec3>& centroids, int depth) {
+  Node& node = nodes_[index];
   if (end - begin <= kLeafSize) {
-    nodes_[index].first = begin;
-    nodes_[index].count = end - begin;
-    return index;
+    node.box.setEmpty();
+    for (std::uint32_t i = begin; i < end; ++i) node.box.extend(boxes_[order_[i]]);
+    node.first = begin;
+    node.count = end - begin;
+    return index + 1;
   }
   Box3 centre_box;
   centre_box.setEmpty();
@@ -92,11 +102,19 @@ std::uint32_t TriangleBvh::build(std::uint32_t begin, std::uint32_t end, const s
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                    [&](std::uint32_t x, std::uint32_t y) { return centroids[x][axis] < centroids[y][axis]; });
-  const std::uint32_t left = build(begin, mid, centroids);
-  const std::uint32_t right = build(mid, end, centroids);
-  nodes_[index].left = left;
-  nodes_[index].right = right;
-  return index;
+  node.left = index + 1;
+  std::uint32_t next = 0;
+  if (depth < kParallelBuildDepth) {
+    node.right = node.left + subtree_nodes(mid - begin);
+    next = node.right + subtree_nodes(end - mid);
+    tbb::parallel_invoke([&] { build(node.left, begin, mid, centroids, depth + 1); },
+                         [&] { build(node.right, mid, end, centroids, depth + 1); });
+  } else {
+    node.right = build(node.left, begin, mid, centroids, depth + 1);
+    next = build(node.right, mid, end, centroids, depth + 1);
+  }
+  node.box = nodes_[node.left].box.merged(nodes_[node.right].box);
+  return next;
 }
 
 TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {

@@ -55,7 +55,8 @@ class TriangleBvh {
     std::uint32_t count = 0;  ///< leaf: number of triangles; 0 for an inner node
     std::uint32_t left = 0, right = 0;  ///< inner node: children
   };
-  std::uint32_t build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids);
+  std::uint32_t build(std::uint32_t index, std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids,
+                      int depth);
   void overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
                          const std::function<void(std::size_t, std::size_t)>& visit) const;
 
