@@ -121,12 +121,20 @@ TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
   Hit best;
   best.squared_distance = std::numeric_limits<double>::infinity();
   if (nodes_.empty()) return best;
-  std::uint32_t stack[kMaxDepth * 2];
+  // Each waiting node with its box's distance to p, measured once, when its parent was opened.
+  struct Waiting {
+    std::uint32_t node;
+    double squared_distance;
+  };
+  Waiting stack[kMaxDepth * 2];
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = {0, 0.0};
+  // (Written !(d >= best), not d < best: a NaN distance is visited, as before the node is opened.)
+  auto beyond_best = [&](double squared_distance) { return squared_distance >= best.squared_distance; };
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (node.box.squaredExteriorDistance(p) >= best.squared_distance) continue;
+    const Waiting waiting = stack[--top];
+    if (beyond_best(waiting.squared_distance)) continue;  // the best has come closer since it was queued
+    const Node& node = nodes_[waiting.node];
     if (node.count > 0) {
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Triangle& t = soup_.triangles[order_[i]];
@@ -138,16 +146,13 @@ TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
       }
       continue;
     }
-    // Visit the nearer child first (pushed last) so that the bound shrinks early.
-    const double dl = nodes_[node.left].box.squaredExteriorDistance(p);
-    const double dr = nodes_[node.right].box.squaredExteriorDistance(p);
-    if (dl < dr) {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    } else {
-      stack[top++] = node.left;
-      stack[top++] = node.right;
-    }
+    // Visit the nearer child first (pushed last) so that the bound shrinks early; a child already
+    // beyond the best is not queued.
+    const Waiting left{node.left, nodes_[node.left].box.squaredExteriorDistance(p)};
+    const Waiting right{node.right, nodes_[node.right].box.squaredExteriorDistance(p)};
+    const bool left_first = left.squared_distance < right.squared_distance;
+    for (const Waiting& child : {left_first ? right : left, left_first ? left : right})
+      if (!beyond_best(child.squared_distance)) stack[top++] = child;
   }
   return best;
 }
