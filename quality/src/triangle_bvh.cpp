@@ -129,7 +129,7 @@ TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
   Waiting stack[kMaxDepth * 2];
   int top = 0;
   stack[top++] = {0, 0.0};
-  // (Written !(d >= best), not d < best: a NaN distance is visited, as before the node is opened.)
+  // A NaN distance is never beyond the best: such a node is opened, as it was before distances were kept.
   auto beyond_best = [&](double squared_distance) { return squared_distance >= best.squared_distance; };
   while (top > 0) {
     const Waiting waiting = stack[--top];
