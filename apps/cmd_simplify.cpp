@@ -93,6 +93,7 @@ int run_simplify(const SimplifyOptions& o) {
   json["intersection_retries"] = result.intersection_retries;
   json["reshapes"] = result.reshapes;
   json["stuck_restarts"] = result.stuck_restarts;
+  json["queue_order"] = result.banded_queue ? "cost_bands" : "cost";
   json["polish"] = {{"flips", result.polish_flips}, {"moves", result.polish_moves}, {"fit_moves", result.fit_moves}};
   if (o.enhance)
     json["enhance"] = {{"stages", result.enhance_stages},

@@ -1,3 +1,4 @@
+#include "../preprocess/src/banded_order.h"
 #include "../preprocess/src/indexed_heap.h"
 #include "../preprocess/src/link_condition.h"
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <utility>
 #include <vector>
@@ -260,6 +262,49 @@ TEST(Simplify, SameInputSameOutput) {
   const TriangleSoup sa = soup_from_mesh(a), sb = soup_from_mesh(b);
   EXPECT_EQ(sa.triangles, sb.triangles);
   EXPECT_EQ(sa.points, sb.points);
+}
+
+TEST(Simplify, BandedOrderKeepsEveryGuarantee) {
+  // The order of big meshes, forced on small ones: the same guards run, so the same guarantees
+  // hold (closed, manifold, genus, no crossing, the target, the angle bound); only which collapse
+  // comes first among costs within 20 % changes, so the sphere stays as near as in the exact order.
+  for (const CollapseCost cost : {CollapseCost::Bending, CollapseCost::Distance}) {
+    SCOPED_TRACE(static_cast<int>(cost));
+    SimplifyParams p = with_cost(cost);
+    p.banded_queue_from_edges = 0;
+    SimplifyResult result;
+    const QualityReport sphere = simplified_quality(test::icosphere(4), p, &result);
+    EXPECT_TRUE(result.banded_queue);
+    EXPECT_TRUE(result.reached_target);
+    EXPECT_TRUE(sphere.closed);
+    EXPECT_TRUE(sphere.manifold);
+    EXPECT_EQ(*sphere.genus, 0);
+    EXPECT_EQ(sphere.self_intersections, 0u);
+    EXPECT_LT(sphere.reference->hausdorff, 0.02);  // as SphereStaysClosedGenus0NearTheSurfaceWithEveryCost
+    EXPECT_GE(sphere.min_angle_deg.min, p.min_angle_deg - 1e-9);
+    p.target_faces = 400;
+    const QualityReport torus = simplified_quality(test::torus(48, 24), p, &result);
+    EXPECT_TRUE(result.reached_target);
+    EXPECT_EQ(*torus.genus, 1);
+    EXPECT_EQ(torus.self_intersections, 0u);
+  }
+  SimplifyResult result;
+  simplified_quality(test::icosphere(4), SimplifyParams{}, &result);
+  EXPECT_FALSE(result.banded_queue);  // 7,680 edges: the exact order
+}
+
+TEST(BandedOrder, BandThenPlaceThenCost) {
+  const detail::BandedOrder order(100000, 1.2, 10);  // blocks of 1,024 edges
+  // Within 20 %: by place, whatever the cost (edge 5,000 is in block 4, edge 100 in block 0).
+  EXPECT_LT(order.key(1.15, 100), order.key(1.0, 5000));
+  // A band apart: by cost, whatever the place.
+  EXPECT_LT(order.key(1.0, 90000), order.key(1.25, 0));
+  EXPECT_LT(order.key(1e-9, 90000), order.key(1e-8, 0));
+  // Same band, same block: by cost.
+  EXPECT_LT(order.key(1.01, 2047), order.key(1.1, 1024));
+  // Nothing costs less than nothing.
+  EXPECT_LT(order.key(0.0, 99999), order.key(std::numeric_limits<double>::min(), 0));
+  EXPECT_LT(order.key(0.0, 0), order.key(0.0, 1024));
 }
 
 TEST(Simplify, BadParameters) {

@@ -59,6 +59,13 @@ struct SimplifyParams {
   /// well-shaped triangles (Bending and Distance only).
   bool enhance = false;
   EnhanceParams enhance_params;  ///< for the stages (max_face_change: the 1 % target slack in total)
+  /// From this many edges on, the queue trades the exact cost order for memory locality: it takes
+  /// the edges in bands of costs within 20 % of one another, each band place by place (in the
+  /// Morton order of the surface), the cheapest first within each place. On big meshes the exact
+  /// order jumps across the surface at every collapse and the collapses wait on memory; measured
+  /// (docs/simplification.md): 0.78-0.85x the time on 1.2 M-face meshes with the same fidelity.
+  /// Smaller meshes keep the exact order. 0 = always banded.
+  std::size_t banded_queue_from_edges = 500000;
   /// Called with the fraction of the work done, in [0, 1].
   std::function<void(double)> progress;
 };
@@ -77,6 +84,7 @@ struct SimplifyResult {
   std::size_t intersection_retries = 0;  ///< restarts with a tighter error cap where the output crossed itself
   std::size_t reshapes = 0;  ///< relaxation sweeps between collapses (each time the face count halved)
   std::size_t stuck_restarts = 0;  ///< queue restarts after flips and relaxation freed collapses the shape guard refused
+  bool banded_queue = false;  ///< the collapses ran in the banded order (banded_queue_from_edges)
   std::size_t enhance_stages = 0, enhance_rounds = 0, enhance_flips = 0, enhance_removed_vertices = 0,
               enhance_split_edges = 0;
 };
