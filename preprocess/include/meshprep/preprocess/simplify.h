@@ -63,8 +63,8 @@ struct SimplifyParams {
   /// the edges in bands of costs within 20 % of one another, each band place by place (in the
   /// Morton order of the surface), the cheapest first within each place. On big meshes the exact
   /// order jumps across the surface at every collapse and the collapses wait on memory; measured
-  /// (docs/simplification.md): 0.78-0.85x the time on 1.2 M-face meshes with the same fidelity.
-  /// Smaller meshes keep the exact order. 0 = always banded.
+  /// (docs/simplification.md): 0.71-0.86x the time on 0.8-1.2 M-face meshes, fidelity within the
+  /// swing any change of order gives. Smaller meshes keep the exact order. 0 = always banded.
   std::size_t banded_queue_from_edges = 500000;
   /// Called with the fraction of the work done, in [0, 1].
   std::function<void(double)> progress;
