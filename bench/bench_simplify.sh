@@ -33,24 +33,43 @@ done
 for c in bending quadric; do row "$work/bunny_x16.off" 0.1 "$c" "bunny00 x16 (1.2 M)"; done
 
 # Single-threaded speed on bunny00 at 10 %: the goal compares bending with the quadric baseline
-# "in the same run", and one run of each is at the mercy of the machine's hour (a shared VM
-# swings by 30 %), so they alternate, RUNS pairs (default 8), and the medians are compared.
+# "in the same run" and with the fastest valid peer (CGAL GH, 0.77 s in ../shared/anchors.md), and
+# one run of each is at the mercy of the machine's hour (a shared VM swings by 30 %), so they
+# alternate, RUNS rounds (default 8), and the medians are compared. CGAL's Garland-Heckbert
+# collapse joins the rounds when libcgal-dev is installed (bench/cgal_gh_peer.cpp; it times the
+# collapse alone, as the anchors do).
 runs=${RUNS:-8}
+peer=
+if [ -f /usr/include/CGAL/Surface_mesh.h ] && [ -f /usr/include/eigen3/Eigen/Core ]; then
+  echo "compiling the CGAL GH peer (about 30 s)..." >&2
+  g++ -O3 -DNDEBUG -DCGAL_EIGEN3_ENABLED -I/usr/include/eigen3 -std=c++17 -Wall -Wextra -Wno-maybe-uninitialized \
+    "$root/bench/cgal_gh_peer.cpp" -o "$work/cgal_gh_peer" -lgmp -lmpfr && peer=$work/cgal_gh_peer
+fi
 for i in $(seq "$runs"); do
   for c in bending quadric; do
     "$bin" simplify "$data/bunny00.off" -o "$work/out.off" --ratio 0.1 --cost "$c" --threads 1 --samples 1000 \
       --json "$work/speed.json" > /dev/null
     python3 -c 'import json, sys; print(sys.argv[2], json.load(open(sys.argv[1]))["time_seconds"])' "$work/speed.json" "$c"
   done
+  if [ -n "$peer" ]; then
+    read -r seconds _ < <("$peer" "$data/bunny00.off" 0.1)
+    echo "cgal_gh $seconds"
+  fi
 done > "$work/speed.txt"
 python3 - "$work/speed.txt" <<'PY'
 import statistics, sys
-times = {"bending": [], "quadric": []}
+times = {"bending": [], "quadric": [], "cgal_gh": []}
 for line in open(sys.argv[1]):
     cost, seconds = line.split()
     times[cost].append(float(seconds))
 b, q = statistics.median(times["bending"]), statistics.median(times["quadric"])
 print()
-print("Single-threaded, bunny00 to 10 %%, %d alternating pairs: bending median %.3f s (fastest %.3f), "
+print("Single-threaded, bunny00 to 10 %%, %d alternating rounds: bending median %.3f s (fastest %.3f), "
       "quadric median %.3f s; quadric / bending %.2f" % (len(times["bending"]), b, min(times["bending"]), q, q / b))
+if times["cgal_gh"]:
+    c = statistics.median(times["cgal_gh"])
+    pairwise = statistics.median(x / y for x, y in zip(times["bending"], times["cgal_gh"]))
+    print("CGAL GH (same rounds) median %.3f s; bending / CGAL GH %.2f (median of the rounds' ratios)" % (c, pairwise))
+else:
+    print("CGAL GH not timed: libcgal-dev is not installed")
 PY
