@@ -23,26 +23,6 @@ TEST(TriangleBvh, ClosestPointMatchesBruteForce) {
   }
 }
 
-// A starting face only bounds the search: any face, near or far, gives the same closest point.
-TEST(TriangleBvh, ClosestPointFromAStartingFaceMatchesBruteForce) {
-  const TriangleSoup s = test::icosphere(3);
-  const TriangleBvh bvh(s);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-2, 2);
-  std::uniform_int_distribution<std::size_t> face(0, s.triangles.size() - 1);
-  for (int k = 0; k < 200; ++k) {
-    const Vec3 p(u(rng), u(rng), u(rng));
-    double best = INFINITY;
-    for (const Triangle& t : s.triangles)
-      best = std::min(best, (closest_point_on_triangle(p, s.points[t[0]], s.points[t[1]], s.points[t[2]]) - p).squaredNorm());
-    const std::size_t start = face(rng);
-    const TriangleBvh::Hit hit = bvh.closest_point(p, start);
-    EXPECT_DOUBLE_EQ(hit.squared_distance, best);
-    EXPECT_DOUBLE_EQ((hit.point - p).squaredNorm(), hit.squared_distance);
-    EXPECT_DOUBLE_EQ(bvh.closest_point(p, bvh.closest_point(p).face).squared_distance, best);
-  }
-}
-
 TEST(ClosestPointOnTriangle, Regions) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
   EXPECT_TRUE(closest_point_on_triangle({0.2, 0.2, 5}, a, b, c).isApprox(Vec3(0.2, 0.2, 0)));

@@ -60,7 +60,7 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
     std::optional<double> bound;  // squared: the farthest sample's distance before, at least the tolerance
     for (double fraction = 1; fraction > kSmallestFraction; fraction *= 0.5) {
       const Vec3 target = relax->from + fraction * (relax->to - relax->from);
-      const TriangleBvh::Hit on_surface = reference.closest_point(target, here.face);
+      const TriangleBvh::Hit on_surface = reference.closest_point(target);
       if ((on_surface.point - target).norm() > kFarFromSurface * relax->reach ||
           !same_side(reference, on_surface, relax->normal))
         continue;
@@ -72,12 +72,12 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
       if (!bound) {
         double farthest = 0;
         each_sample(mesh, v, relax->from, [&](const Vec3& p) {
-          farthest = std::max(farthest, reference.closest_point(p, here.face).squared_distance);
+          farthest = std::max(farthest, reference.closest_point(p).squared_distance);
           return true;
         });
         bound = std::max(tolerance * tolerance, farthest);
       }
-      const auto near = [&](const Vec3& p) { return reference.closest_point(p, here.face).squared_distance <= *bound; };
+      const auto near = [&](const Vec3& p) { return reference.closest_point(p).squared_distance <= *bound; };
       if (!each_sample(mesh, v, y, near)) continue;
       mesh.set_point(v, to_openmesh(y));
       ++moves;

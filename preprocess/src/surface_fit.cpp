@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 namespace meshprep::detail {
 namespace {
@@ -18,16 +17,12 @@ constexpr double kStepCap = 0.25;  // of the shortest edge at the vertex
 
 Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
 
-// Sums of the least-squares step along the normal: t = -sum w n.r / sum w^2. The samples lie
-// around one vertex: each search starts from the face nearest the first.
+// Sums of the least-squares step along the normal: t = -sum w n.r / sum w^2.
 struct NormalStep {
   Vec3 weighted_residual = Vec3::Zero();  // sum w (p - c)
   double weight_squares = 0;              // sum w^2
-  std::optional<std::size_t> near_face;
   void add(const TriangleBvh& reference, const Vec3& p, double weight) {
-    const TriangleBvh::Hit hit = near_face ? reference.closest_point(p, *near_face) : reference.closest_point(p);
-    if (!near_face) near_face = hit.face;
-    weighted_residual += weight * (p - hit.point);
+    weighted_residual += weight * (p - reference.closest_point(p).point);
     weight_squares += weight * weight;
   }
 };

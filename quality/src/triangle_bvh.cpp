@@ -118,19 +118,8 @@ std::uint32_t TriangleBvh::build(std::uint32_t index, std::uint32_t begin, std::
 }
 
 TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
-  Hit none;
-  none.squared_distance = std::numeric_limits<double>::infinity();
-  return closest_point_within(p, none);
-}
-
-TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p, std::size_t near_face) const {
-  const Triangle& t = soup_.triangles[near_face];
-  const Vec3 q = closest_point_on_triangle(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
-  return closest_point_within(p, {near_face, q, (q - p).squaredNorm()});
-}
-
-// The closest point of the surface to p if nearer than `best`, else `best`.
-TriangleBvh::Hit TriangleBvh::closest_point_within(const Vec3& p, Hit best) const {
+  Hit best;
+  best.squared_distance = std::numeric_limits<double>::infinity();
   if (nodes_.empty()) return best;
   // Each waiting node with its box's distance to p, measured once, when its parent was opened.
   struct Waiting {

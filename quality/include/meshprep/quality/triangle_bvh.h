@@ -37,10 +37,6 @@ class TriangleBvh {
   /// Closest point of the surface to p. \pre the soup has at least one triangle.
   Hit closest_point(const Vec3& p) const;
 
-  /// The same closest point, found faster when triangle `near_face` is close to p (a query next to
-  /// an earlier one: its hit's face): the search starts with that triangle's distance as its bound.
-  Hit closest_point(const Vec3& p, std::size_t near_face) const;
-
   /// Calls `visit(face)` for every triangle whose box overlaps `box`.
   void for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const;
 
@@ -59,7 +55,6 @@ class TriangleBvh {
     std::uint32_t count = 0;  ///< leaf: number of triangles; 0 for an inner node
     std::uint32_t left = 0, right = 0;  ///< inner node: children
   };
-  Hit closest_point_within(const Vec3& p, Hit best) const;
   std::uint32_t build(std::uint32_t index, std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids,
                       int depth);
   void overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
