@@ -2,8 +2,9 @@
 # Simplification side by side: our bending and distance costs and OpenMesh's quadric decimater
 # (--cost quadric, the baseline linked into the same binary), on bunny00 and fandisk at 30 % and
 # 10 %, then the scale run (bunny00 Loop-subdivided twice, 1.2 M faces, to 10 %). Figures are
-# meshprep's own quality report against the input (Hausdorff and RMS / bbox diagonal).
-# Needs ../shared/data. Usage: bench/bench_simplify.sh [build-dir]   (default: build)
+# meshprep's own quality report against the input (Hausdorff and RMS / bbox diagonal). Last, the
+# single-thread speed rounds, with CGAL's Garland-Heckbert collapse when libcgal-dev is installed.
+# Needs ../shared/data. Usage: [RUNS=8] bench/bench_simplify.sh [build-dir]   (default: build)
 source "$(dirname "$0")/bench_setup.sh" "${1:-}" meshes
 
 row() {  # mesh-file ratio cost label
