@@ -53,8 +53,7 @@ for i in $(seq "$runs"); do
     python3 -c 'import json, sys; print(sys.argv[2], json.load(open(sys.argv[1]))["time_seconds"])' "$work/speed.json" "$c"
   done
   if [ -n "$peer" ]; then
-    read -r seconds _ < <("$peer" "$data/bunny00.off" 0.1)
-    echo "cgal_gh $seconds"
+    read -r seconds _ < <("$peer" "$data/bunny00.off" 0.1) && echo "cgal_gh $seconds"
   fi
 done > "$work/speed.txt"
 python3 - "$work/speed.txt" <<'PY'
