@@ -475,9 +475,15 @@ TEST(CollapsePoint, CurvedPatchAndDegenerateCases) {
 }
 
 TEST(CollapseEnergy, SmallRingKernelMatchesTheFullEnergyMatrix) {
-  // Up to 40 centres CollapseEnergy uses a fixed-size bordered LU instead of the null-space
-  // solution of volume_spline_energy_matrix: the same J(s) up to round-off, in 3D and on a plane.
-  for (const std::vector<Vec3>& centres : {scattered_centres(14), tilted_plane_points(12), scattered_centres(40)}) {
+  // Up to 40 centres CollapseEnergy uses a fixed-size kernel (one Cholesky in the border's null
+  // space, compiled apart for 8-13 centres) instead of volume_spline_energy_matrix: the same J(s)
+  // up to round-off, in 3D (rank 4) and on a plane (rank 3), for each compiled size and beyond.
+  std::vector<std::vector<Vec3>> sets;
+  for (const int n : {8, 9, 10, 11, 12, 13, 14, 40}) {
+    sets.push_back(scattered_centres(n));
+    sets.push_back(tilted_plane_points(n));
+  }
+  for (const std::vector<Vec3>& centres : sets) {
     const Eigen::MatrixXd e = volume_spline_energy_matrix(centres);
     const CollapseEnergy energy(centres, 2, 5);
     const double d2 = (centres[5] - centres[2]).squaredNorm();
