@@ -128,12 +128,6 @@ EnergyBlock energy_entries(const Vec3* centres, const int n, int a, int b, doubl
   return {factor * dot<S>(za, za, rank, n), factor * dot<S>(za, zb, rank, n), factor * dot<S>(zb, zb, rank, n)};
 }
 
-// The kernel for exactly N centres.
-template <int N>
-EnergyBlock energy_entries_of(const Vec3* centres, int a, int b, double scale, const Basis& range, int rank) {
-  return energy_entries<N>(centres, N, a, b, scale, range, rank);
-}
-
 }  // namespace
 
 EnergyBlock collapse_energy_block(const Vec3* centres, int n, int a, int b) {
@@ -166,12 +160,12 @@ EnergyBlock collapse_energy_block(const Vec3* centres, int n, int a, int b) {
   if (rank == n) return {};  // every deformation of the centres is affine: E = 0
 
   switch (n) {  // the union of two 1-rings: 9-11 centres for most edges of a mesh
-    case 8: return energy_entries_of<8>(centres, a, b, scale, basis, rank);
-    case 9: return energy_entries_of<9>(centres, a, b, scale, basis, rank);
-    case 10: return energy_entries_of<10>(centres, a, b, scale, basis, rank);
-    case 11: return energy_entries_of<11>(centres, a, b, scale, basis, rank);
-    case 12: return energy_entries_of<12>(centres, a, b, scale, basis, rank);
-    case 13: return energy_entries_of<13>(centres, a, b, scale, basis, rank);
+    case 8: return energy_entries<8>(centres, 8, a, b, scale, basis, rank);
+    case 9: return energy_entries<9>(centres, 9, a, b, scale, basis, rank);
+    case 10: return energy_entries<10>(centres, 10, a, b, scale, basis, rank);
+    case 11: return energy_entries<11>(centres, 11, a, b, scale, basis, rank);
+    case 12: return energy_entries<12>(centres, 12, a, b, scale, basis, rank);
+    case 13: return energy_entries<13>(centres, 13, a, b, scale, basis, rank);
     default: return energy_entries<kMax>(centres, n, a, b, scale, basis, rank);
   }
 }
