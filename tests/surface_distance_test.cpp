@@ -23,6 +23,25 @@ TEST(TriangleBvh, ClosestPointMatchesBruteForce) {
   }
 }
 
+// The early-exit query gives the closest point's answer on either side of the distance, and at it.
+TEST(TriangleBvh, ReachesWithinAgreesWithTheClosestPoint) {
+  const TriangleSoup s = test::icosphere(3);
+  const TriangleBvh bvh(s);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    const double d2 = bvh.closest_point(p).squared_distance;
+    EXPECT_TRUE(bvh.reaches_within(p, d2));
+    EXPECT_TRUE(bvh.reaches_within(p, 1.01 * d2 + 1e-12));
+    if (d2 > 0) {
+      EXPECT_FALSE(bvh.reaches_within(p, 0.99 * d2));
+    }
+  }
+  EXPECT_FALSE(bvh.reaches_within(Vec3(3, 0, 0), 3.9));  // the sphere's radius is 1: 2 from (3, 0, 0)
+  EXPECT_TRUE(bvh.reaches_within(Vec3(3, 0, 0), 4.1));
+}
+
 TEST(ClosestPointOnTriangle, Regions) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
   EXPECT_TRUE(closest_point_on_triangle({0.2, 0.2, 5}, a, b, c).isApprox(Vec3(0.2, 0.2, 0)));

@@ -69,15 +69,15 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
       if (move.turns || !(worst_radius_ratio(mesh, v, y) < ratio_before) ||
           move.new_cosine > std::max(min_angle_cosine, move.old_cosine))
         continue;
-      if (!bound) {
-        double farthest = 0;
+      if (!bound) {  // only a sample beyond the bound so far needs its exact distance
+        double farthest = tolerance * tolerance;
         each_sample(mesh, v, relax->from, [&](const Vec3& p) {
-          farthest = std::max(farthest, reference.closest_point(p).squared_distance);
+          if (!reference.reaches_within(p, farthest)) farthest = reference.closest_point(p).squared_distance;
           return true;
         });
-        bound = std::max(tolerance * tolerance, farthest);
+        bound = farthest;
       }
-      const auto near = [&](const Vec3& p) { return reference.closest_point(p).squared_distance <= *bound; };
+      const auto near = [&](const Vec3& p) { return reference.reaches_within(p, *bound); };
       if (!each_sample(mesh, v, y, near)) continue;
       mesh.set_point(v, to_openmesh(y));
       ++moves;

@@ -157,6 +157,32 @@ TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
   return best;
 }
 
+bool TriangleBvh::reaches_within(const Vec3& p, double squared_radius) const {
+  if (nodes_.empty()) return false;
+  std::uint32_t stack[kMaxDepth * 2];
+  int top = 0;
+  if (nodes_[0].box.squaredExteriorDistance(p) <= squared_radius) stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const Triangle& t = soup_.triangles[order_[i]];
+        const Vec3 q = closest_point_on_triangle(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
+        if ((q - p).squaredNorm() <= squared_radius) return true;
+      }
+      continue;
+    }
+    // The nearer child is pushed last, so searched first.
+    const double left = nodes_[node.left].box.squaredExteriorDistance(p);
+    const double right = nodes_[node.right].box.squaredExteriorDistance(p);
+    const bool left_first = left < right;
+    for (const auto& [child, distance] : {left_first ? std::pair(node.right, right) : std::pair(node.left, left),
+                                          left_first ? std::pair(node.left, left) : std::pair(node.right, right)})
+      if (distance <= squared_radius) stack[top++] = child;
+  }
+  return false;
+}
+
 void TriangleBvh::for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const {
   if (nodes_.empty()) return;
   std::uint32_t stack[kMaxDepth * 2];

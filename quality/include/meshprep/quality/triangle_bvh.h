@@ -37,6 +37,11 @@ class TriangleBvh {
   /// Closest point of the surface to p. \pre the soup has at least one triangle.
   Hit closest_point(const Vec3& p) const;
 
+  /// Whether some triangle comes within sqrt(squared_radius) of p: the same answer as
+  /// `closest_point(p).squared_distance <= squared_radius`, but the search stops at the first such
+  /// triangle and never opens a box farther than the radius.
+  bool reaches_within(const Vec3& p, double squared_radius) const;
+
   /// Calls `visit(face)` for every triangle whose box overlaps `box`.
   void for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const;
 
