@@ -18,8 +18,17 @@ Vec3 point(const TriMesh& mesh, TriMesh::VertexHandle v) { return to_eigen(mesh.
 
 }  // namespace
 
+// One walk around v instead of OpenMesh's is_boundary, is_manifold and valence (the library's are
+// out of line and check every handle): a vertex with no outgoing boundary halfedge is interior and
+// manifold, OpenMesh keeping a boundary halfedge as the outgoing one wherever there is one.
 bool relaxable(const TriMesh& mesh, TriMesh::VertexHandle v) {
-  return !mesh.status(v).deleted() && !mesh.is_boundary(v) && mesh.is_manifold(v) && mesh.valence(v) >= 3;
+  if (mesh.status(v).deleted()) return false;
+  int valence = 0;
+  for (const auto h : mesh.voh_range(v)) {
+    if (mesh.is_boundary(h)) return false;
+    ++valence;
+  }
+  return valence >= 3;
 }
 
 bool in_tail(const TriMesh& mesh, TriMesh::VertexHandle v, const ShapeTail& tail) {
