@@ -22,10 +22,9 @@ bool nearly_parallel(const Vec3& n0, const Vec3& n1) { return n0.dot(n1) >= kFla
 std::size_t flip_sweep(TriMesh& mesh, double tolerance) {
   std::size_t flips = 0;
   for (const auto e : mesh.edges()) {
-    if (mesh.status(e).deleted() || mesh.is_boundary(e) || !mesh.is_flip_ok(e)) continue;
+    if (mesh.status(e).deleted() || mesh.is_boundary(e)) continue;
     const auto h0 = mesh.halfedge_handle(e, 0), h1 = mesh.halfedge_handle(e, 1);
     const VertexHandle va = mesh.from_vertex_handle(h0), vb = mesh.to_vertex_handle(h0);
-    if (mesh.valence(va) <= 3 || mesh.valence(vb) <= 3) continue;  // would leave a valence-2 vertex
     const Vec3 a = point(mesh, va), b = point(mesh, vb);
     const Vec3 c = point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h0)));
     const Vec3 d = point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h1)));
@@ -37,10 +36,11 @@ std::size_t flip_sweep(TriMesh& mesh, double tolerance) {
     if (std::abs((0.5 * (a + b) - 0.5 * (c + d)).dot(normal.normalized())) > tolerance) continue;
     const double before = std::max(smallest_angle_cosine(a, b, c), smallest_angle_cosine(b, a, d));
     const double after = std::max(smallest_angle_cosine(a, d, c), smallest_angle_cosine(d, b, c));
-    if (after < before - 1e-12) {
-      mesh.flip(e);
-      ++flips;
-    }
+    if (!(after < before - 1e-12)) continue;
+    // The topology last: few edges get this far, and OpenMesh's checks are out of line.
+    if (!mesh.is_flip_ok(e) || mesh.valence(va) <= 3 || mesh.valence(vb) <= 3) continue;  // no valence-2 vertex
+    mesh.flip(e);
+    ++flips;
   }
   return flips;
 }
