@@ -1,0 +1,97 @@
+#pragma once
+/// \file improve_tets.h
+/// Tet mesh improvement: what TetGen leaves (slivers across the part, caps, needles) made into
+/// tets a solver can use, with the boundary triangles kept exactly. The schedule follows Klingner
+/// & Shewchuk, "Aggressive tetrahedral mesh improvement" (IMR 2007): the tets below the goal are
+/// taken worst first, and each is given, in order,
+/// - the best topological move around it: edge removal (3-2, 4-4 and larger flips, Shewchuk 2002)
+///   on its six edges and multi-face removal (2-3 and larger flips) on its four faces;
+/// - smoothing of its free corners (Freitag's active-set method, maximising the worst tet);
+/// - contraction of a free corner into a neighbour (the vertex no position suits);
+/// - the best few topological moves again, each followed by smoothing of the corners it touched
+///   and judged together (a flip that only pays once a vertex has moved);
+/// - a new vertex inside it, joined to the best cavity around it.
+/// A move is kept only if it raises the worst quality among the tets it replaces, and only if
+/// every tet it makes is positive by an exact orientation test: no tet is ever inverted, and the
+/// sorted list of qualities rises at every move, so nothing cycles. A pass ends when no tet
+/// below the goal is left to try; the run stops when the goal is reached, when a pass gains
+/// nothing (neither the worst tet nor the number below the goal), or at a pass or time limit.
+///
+/// The objective is the biased minimum sine of the dihedral angles (fem/src/improve/
+/// tet_objective.h): the sine is zero exactly at 0 and 180 degrees, and the obtuse angles are
+/// weighted so that goal_max_dihedral_deg scores like goal_min_dihedral_deg.
+///
+/// Kept exactly: every constrained face (the boundary: faces with one tet; faces between two
+/// regions; any face listed in boundary_faces) with its corners, which never move; the regions
+/// (no move mixes two); the boundary tags. What the surface forbids (fem/src/improve/
+/// surface_limits.h): at a boundary edge whose interior angle alpha is below the goal, every tet
+/// there has a dihedral angle <= alpha; below twice the goal, either one tet spans the edge, the
+/// one the two boundary faces force, or one of several has a dihedral angle <= alpha / 2. Edges
+/// where the better of the two is below the goal are listed with that bound.
+
+#include "meshprep/fem/tet_mesh.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace meshprep {
+
+struct ImproveParams {
+  /// A tet is below the goal if a dihedral angle is smaller than goal_min_dihedral_deg or larger
+  /// than goal_max_dihedral_deg; those are the tets the improvement works on. Degrees,
+  /// 0 < min < 60 < max < 180.
+  double goal_min_dihedral_deg = 15;
+  double goal_max_dihedral_deg = 160;
+  bool topological_moves = true;  ///< edge and multi-face removal
+  bool smoothing = true;          ///< moving free vertices
+  bool insertion = true;          ///< new interior vertices
+  std::size_t max_passes = 10;    ///< >= 1
+  double time_limit_seconds = 0;  ///< 0: none; the run stops after the move under way
+  std::function<void(double fraction)> progress;  ///< optional, the share of the goal reached
+  std::function<bool()> cancelled;  ///< optional, asked every few hundred moves; true: throw Cancelled
+};
+
+/// A boundary edge where the surface caps the smallest dihedral angle below the goal.
+struct LimitingBoundaryEdge {
+  std::uint32_t a = 0, b = 0;  ///< point indices
+  Vec3 midpoint = Vec3::Zero();
+  double interior_angle_deg = 0;  ///< the solid's angle at the edge
+  double bound_deg = 0;           ///< no tets with this boundary have a smallest dihedral angle above it
+};
+
+struct ImproveResult {
+  double min_dihedral_before_deg = 0, max_dihedral_before_deg = 0;
+  double min_dihedral_after_deg = 0, max_dihedral_after_deg = 0;
+  std::size_t below_goal_before = 0, below_goal_after = 0;  ///< tets
+  std::size_t tets_before = 0, tets_after = 0;
+  std::size_t edge_removals = 0;        ///< including 3-2 and 4-4 flips
+  std::size_t multi_face_removals = 0;  ///< including 2-3 flips
+  std::size_t vertex_moves = 0;         ///< successful smoothing steps
+  std::size_t compound_moves = 0;       ///< removals kept only with the smoothing after them
+  std::size_t contractions = 0;         ///< free vertices merged into a neighbour
+  std::size_t inserted_vertices = 0;
+  std::size_t passes = 0;
+  std::string stopped_by;  ///< "goal reached", "no gain", "pass limit", "time limit", "nothing to do"
+  double seconds = 0;
+  /// Lowest bound first, at most 100 listed; limiting_edge_count counts them all.
+  std::vector<LimitingBoundaryEdge> limiting_edges;
+  std::size_t limiting_edge_count = 0;
+  /// The lowest bound of limiting_edges (the goal when there are none): the best smallest
+  /// dihedral angle the boundary allows, as far as these edges tell.
+  double surface_bound_deg = 0;
+};
+
+/// Improves `mesh` in place (its points keep their indices; new points are appended; tets are
+/// renumbered). \pre every tet positively oriented (TetGen's and the readers' are).
+/// \throws InvalidInput for a malformed mesh (indices, region count, a face shared by three tets,
+///         tets that overlap) or parameters out of range; Cancelled when params.cancelled said so
+///         (the mesh is then unchanged).
+ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params = {});
+
+/// The figures, for reports: keys as the struct's members.
+nlohmann::ordered_json to_json(const ImproveResult& result);
+
+}  // namespace meshprep

@@ -1,0 +1,365 @@
+// The schedule of tet improvement (improve_tets.h): the tets below the goal, worst first, each
+// given the best topological move around it, else smoothing of its free corners, else a new
+// vertex; passes until the goal is reached or a pass gains nothing.
+#include "meshprep/fem/improve_tets.h"
+
+#include "compound_move.h"
+#include "edge_contraction.h"
+#include "surface_limits.h"
+#include "tet_complex.h"
+#include "topological_moves.h"
+#include "vertex_insertion.h"
+#include "vertex_smoothing.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/fem/tet_quality.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <queue>
+#include <unordered_map>
+#include <cstdio>
+#include <cstdlib>
+
+namespace meshprep {
+namespace {
+
+using namespace improve;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kRadiansPerDegree = M_PI / 180.0;
+// Rings of more tets than this are not removed: the programme is cubic in the ring, and Klingner
+// & Shewchuk found larger rings rarely help.
+constexpr std::size_t kMaxRing = 10;
+// Multi-face removal looks at most this many sandwiched faces.
+constexpr std::size_t kMaxSandwichedFaces = 12;
+// Vertex insertion grows its cavity to at most this many tets.
+constexpr std::size_t kMaxCavity = 24;
+// Compound moves try the best few candidates of the topological moves (each costs a smoothing).
+constexpr std::size_t kCompoundCandidates = 2;
+// A pass tries at most this many tets per tet below the goal at its start: moves that each gain a
+// little can feed one another for long (every smoothing step raises a minimum by >= 1e-4, but
+// neighbours trade such gains); the next pass starts from the queue afresh.
+constexpr std::size_t kTriesPerBadTet = 20;
+// How often (in tets tried) the run asks the cancellation callback and reports progress.
+constexpr std::size_t kPollEvery = 256;
+constexpr std::size_t kListedLimitingEdges = 100;
+
+void check_params(const ImproveParams& p) {
+  if (!(p.goal_min_dihedral_deg > 0 && p.goal_min_dihedral_deg < 60))
+    throw InvalidInput("improve: goal_min_dihedral_deg must be in (0, 60), got " + std::to_string(p.goal_min_dihedral_deg));
+  if (!(p.goal_max_dihedral_deg > 60 && p.goal_max_dihedral_deg < 180))
+    throw InvalidInput("improve: goal_max_dihedral_deg must be in (60, 180), got " + std::to_string(p.goal_max_dihedral_deg));
+  if (p.max_passes < 1) throw InvalidInput("improve: max_passes must be at least 1");
+  if (!(p.time_limit_seconds >= 0)) throw InvalidInput("improve: time_limit_seconds must be >= 0");
+}
+
+struct DihedralRange {
+  double min = 180, max = 0;
+};
+
+DihedralRange dihedral_range(const TetMesh& mesh) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.tets.size(), 4096), DihedralRange{},
+      [&](const auto& range, DihedralRange r) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+          const auto& v = mesh.tets[t];
+          const TetShape s = tet_shape(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
+          r.min = std::min(r.min, s.min_dihedral_deg);
+          r.max = std::max(r.max, s.max_dihedral_deg);
+        }
+        return r;
+      },
+      [](DihedralRange a, const DihedralRange& b) { return DihedralRange{std::min(a.min, b.min), std::max(a.max, b.max)}; });
+}
+
+class Schedule {
+ public:
+  Schedule(TetComplex& mesh, const ImproveParams& params, ImproveResult& result)
+      : mesh_(mesh), params_(params), result_(result), goal_(std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree)) {}
+
+  std::size_t below_goal() const {
+    std::size_t n = 0;
+    for (TetId t = 0; t < mesh_.tet_slots(); ++t) n += mesh_.alive(t) && mesh_.quality(t) < goal_;
+    return n;
+  }
+
+  double worst() const {
+    double w = 1;
+    for (TetId t = 0; t < mesh_.tet_slots(); ++t)
+      if (mesh_.alive(t)) w = std::min(w, mesh_.quality(t));
+    return w;
+  }
+
+  void run() {
+    const Clock::time_point start = Clock::now();
+    result_.below_goal_before = below_goal();
+    if (result_.below_goal_before == 0) {
+      result_.stopped_by = "nothing to do";
+      return;
+    }
+    std::size_t below = result_.below_goal_before;
+    double worst_now = worst();
+    for (std::size_t pass = 0; pass < params_.max_passes; ++pass) {
+      if (!may_go_on(start)) {
+        result_.stopped_by = "time limit";
+        return;
+      }
+      ++result_.passes;
+      if (!run_pass(start)) {
+        result_.stopped_by = "time limit";
+        return;
+      }
+      const std::size_t below_after = below_goal();
+      const double worst_after = worst();
+      if (below_after == 0) {
+        result_.stopped_by = "goal reached";
+        return;
+      }
+      if (below_after >= below && worst_after <= worst_now) {
+        result_.stopped_by = "no gain";
+        return;
+      }
+      below = below_after;
+      worst_now = worst_after;
+    }
+    result_.stopped_by = "pass limit";
+  }
+
+ private:
+  // A queued tet, stale once its slot holds another tet or the tet changed shape.
+  struct Entry {
+    double quality;
+    TetId tet;
+    Tetrahedron corners;
+    bool operator>(const Entry& o) const { return quality != o.quality ? quality > o.quality : tet > o.tet; }
+  };
+  using Queue = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+
+  void push_if_bad(TetId t) {
+    if (mesh_.alive(t) && mesh_.quality(t) < goal_) queue_.push({mesh_.quality(t), t, mesh_.tet(t)});
+  }
+
+  // Asks the cancellation callback and the clock; false when the time is up.
+  bool may_go_on(Clock::time_point start) const {
+    if (params_.cancelled && params_.cancelled()) throw Cancelled("tet improvement stopped");
+    return !(params_.time_limit_seconds > 0 &&
+             std::chrono::duration<double>(Clock::now() - start).count() > params_.time_limit_seconds);
+  }
+
+  // One pass over the tets below the goal, worst first; false if the time limit stopped it.
+  bool run_pass(Clock::time_point start) {
+    queue_ = Queue();
+    for (TetId t = 0; t < mesh_.tet_slots(); ++t) push_if_bad(t);
+    const double initial = static_cast<double>(std::max<std::size_t>(1, result_.below_goal_before));
+    const std::size_t budget = kTriesPerBadTet * queue_.size();
+    std::size_t tried = 0;
+    while (!queue_.empty() && tried < budget) {
+      const Entry e = queue_.top();
+      queue_.pop();
+      if (!mesh_.alive(e.tet) || mesh_.tet(e.tet) != e.corners || mesh_.quality(e.tet) != e.quality) continue;
+      if (++tried % kPollEvery == 0) {
+        if (!may_go_on(start)) return false;
+        if (params_.progress) params_.progress(std::clamp(1.0 - static_cast<double>(queue_.size()) / initial, 0.0, 1.0));
+      }
+      if (unchanged_since_failure(e.tet)) continue;
+      if (!improve_tet(e.tet)) failed_[sorted(e.corners)] = epoch_;
+    }
+    return true;
+  }
+
+  // Tries to raise tet t; the tets a kept move changed are queued if still below the goal.
+  bool improve_tet(TetId t) {
+    candidates_.clear();
+    if (params_.topological_moves && try_topological(t)) return true;
+    if (params_.smoothing && try_smoothing(t)) return true;
+    if (params_.topological_moves && try_contraction(t)) return true;
+    if (params_.topological_moves && params_.smoothing && try_compound()) return true;
+    if (params_.insertion && insert_vertex(mesh_, t, kMaxCavity)) {
+      ++result_.inserted_vertices;
+      changed(mesh_.created());
+      changed_star(static_cast<VertexId>(mesh_.points() - 1));
+      return true;
+    }
+    return false;
+  }
+
+  // The best improving move around t; every candidate is kept for try_compound.
+  bool try_topological(TetId t) {
+    const Tetrahedron tet = mesh_.tet(t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) candidates_.push_back({edge_removal(mesh_, t, tet[i], tet[j], kMaxRing), true});
+    for (int c = 0; c < 4; ++c) candidates_.push_back({multi_face_removal(mesh_, t, c, kMaxSandwichedFaces), false});
+    candidates_.erase(std::remove_if(candidates_.begin(), candidates_.end(), [](const Candidate& c) { return c.move.fresh.empty(); }),
+                      candidates_.end());
+    std::sort(candidates_.begin(), candidates_.end(),
+              [](const Candidate& a, const Candidate& b) { return a.move.new_worst > b.move.new_worst; });
+    if (candidates_.empty() || !candidates_.front().move.improves()) return false;
+    const Candidate& best = candidates_.front();
+    if (!mesh_.replace(best.move.old, best.move.fresh)) return false;
+    ++(best.edge ? result_.edge_removals : result_.multi_face_removals);
+    changed(mesh_.created());
+    return true;
+  }
+
+  bool try_smoothing(TetId t) {
+    bool moved = false;
+    const Tetrahedron tet = mesh_.tet(t);
+    for (const VertexId v : tet) {
+      if (!mesh_.free_vertex(v) || !smooth_vertex(mesh_, v)) continue;
+      ++result_.vertex_moves;
+      moved = true;
+      changed_star(v);
+    }
+    return moved;
+  }
+
+  // The best improving contraction of a free corner of t.
+  bool try_contraction(TetId t) {
+    Move best;
+    VertexId removed = kNoVertex;
+    for (const VertexId v : mesh_.tet(t)) {
+      if (!mesh_.free_vertex(v)) continue;
+      Move m = best_contraction(mesh_, v);
+      if (m.improves() && (best.fresh.empty() || m.new_worst > best.new_worst)) best = std::move(m), removed = v;
+    }
+    if (removed == kNoVertex || !mesh_.remove_vertex(removed, best.old, best.fresh)) return false;
+    ++result_.contractions;
+    changed(mesh_.created());
+    return true;
+  }
+
+  // The candidates no move kept alone, best first, each followed by smoothing (compound_move.h).
+  // Candidates are valid only while the mesh is as try_topological saw it: smoothing had failed.
+  bool try_compound() {
+    std::vector<TetId> tets;
+    for (std::size_t k = 0; k < candidates_.size() && k < kCompoundCandidates; ++k) {
+      const Candidate& c = candidates_[k];
+      if (!move_and_smooth(mesh_, c.move, tets)) continue;
+      ++(c.edge ? result_.edge_removals : result_.multi_face_removals);
+      ++result_.compound_moves;
+      changed(tets);
+      return true;
+    }
+    return false;
+  }
+
+  // Tets changed shape or were made: they are queued if below the goal, and their corners are
+  // stamped with a new epoch, so that the tets around them that failed before are tried again.
+  void changed(const std::vector<TetId>& tets) {
+    ++epoch_;
+    vertex_epoch_.resize(mesh_.points(), 0);
+    for (const TetId t : tets) {
+      push_if_bad(t);
+      for (const VertexId v : mesh_.tet(t)) vertex_epoch_[v] = epoch_;
+    }
+  }
+
+  void changed_star(VertexId v) {
+    mesh_.star(v, star_);
+    changed(star_);
+  }
+
+  // A tet that failed every move is not tried again until a move touches one of its corners.
+  bool unchanged_since_failure(TetId t) const {
+    const auto found = failed_.find(sorted(mesh_.tet(t)));
+    if (found == failed_.end()) return false;
+    for (const VertexId v : mesh_.tet(t))
+      if (v < vertex_epoch_.size() && vertex_epoch_[v] > found->second) return false;
+    return true;
+  }
+
+  static Tetrahedron sorted(Tetrahedron t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  }
+  struct TetHash {
+    std::size_t operator()(const Tetrahedron& t) const {
+      std::uint64_t h = 0;
+      for (const VertexId v : t) h = (h ^ v) * 0x9E3779B97F4A7C15ull;
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+
+  TetComplex& mesh_;
+  const ImproveParams& params_;
+  ImproveResult& result_;
+  const double goal_;  // the objective's value at the goal angles
+  struct Candidate {
+    Move move;
+    bool edge;  // edge removal, else multi-face removal
+  };
+  std::vector<Candidate> candidates_;
+  std::vector<TetId> star_;
+  Queue queue_;
+  std::uint64_t epoch_ = 0;                  // successful moves so far
+  std::vector<std::uint64_t> vertex_epoch_;  // the last move that changed a tet of the vertex
+  std::unordered_map<Tetrahedron, std::uint64_t, TetHash> failed_;  // sorted corners -> epoch
+};
+
+}  // namespace
+
+ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
+  check_params(params);
+  const Clock::time_point start = Clock::now();
+  ImproveResult result;
+  analyze_tet_quality(mesh);  // checks indices and the region count (throws InvalidInput)
+  result.tets_before = mesh.tets.size();
+  const DihedralRange before = dihedral_range(mesh);
+  result.min_dihedral_before_deg = before.min;
+  result.max_dihedral_before_deg = before.max;
+  const double obtuse_weight = std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree) /
+                               std::sin((180.0 - params.goal_max_dihedral_deg) * kRadiansPerDegree);
+  TetComplex complex(mesh, obtuse_weight);
+  std::vector<LimitingBoundaryEdge> limiting = limiting_boundary_edges(complex, params.goal_min_dihedral_deg);
+  result.limiting_edge_count = limiting.size();
+  result.surface_bound_deg = limiting.empty() ? params.goal_min_dihedral_deg : limiting.front().bound_deg;
+  if (limiting.size() > kListedLimitingEdges) limiting.resize(kListedLimitingEdges);
+  result.limiting_edges = std::move(limiting);
+
+  Schedule schedule(complex, params, result);
+  schedule.run();
+  result.below_goal_after = schedule.below_goal();
+  if (result.passes > 0) mesh = complex.to_mesh(mesh);
+  result.tets_after = mesh.tets.size();
+  const DihedralRange after = dihedral_range(mesh);
+  result.min_dihedral_after_deg = after.min;
+  result.max_dihedral_after_deg = after.max;
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+nlohmann::ordered_json to_json(const ImproveResult& r) {
+  nlohmann::ordered_json limiting = nlohmann::ordered_json::array();
+  for (const LimitingBoundaryEdge& e : r.limiting_edges)
+    limiting.push_back({{"points", {e.a, e.b}},
+                        {"midpoint", {e.midpoint.x(), e.midpoint.y(), e.midpoint.z()}},
+                        {"interior_angle_deg", e.interior_angle_deg},
+                        {"bound_deg", e.bound_deg}});
+  return {{"min_dihedral_before_deg", r.min_dihedral_before_deg},
+          {"max_dihedral_before_deg", r.max_dihedral_before_deg},
+          {"min_dihedral_after_deg", r.min_dihedral_after_deg},
+          {"max_dihedral_after_deg", r.max_dihedral_after_deg},
+          {"below_goal_before", r.below_goal_before},
+          {"below_goal_after", r.below_goal_after},
+          {"tets_before", r.tets_before},
+          {"tets_after", r.tets_after},
+          {"edge_removals", r.edge_removals},
+          {"multi_face_removals", r.multi_face_removals},
+          {"vertex_moves", r.vertex_moves},
+          {"compound_moves", r.compound_moves},
+          {"contractions", r.contractions},
+          {"inserted_vertices", r.inserted_vertices},
+          {"passes", r.passes},
+          {"stopped_by", r.stopped_by},
+          {"seconds", r.seconds},
+          {"surface_bound_deg", r.surface_bound_deg},
+          {"limiting_edge_count", r.limiting_edge_count},
+          {"limiting_edges", limiting}};
+}
+
+}  // namespace meshprep

@@ -1,0 +1,23 @@
+#pragma once
+// What the boundary forbids. At a boundary edge e the tets around it split the solid's interior
+// angle alpha there (the sum of their dihedral angles at e). With one tet at e, that tet is
+// forced: e joined to the far corners a1, a2 of the two boundary faces at e, whose shape is fixed
+// by the surface; with k >= 2 tets, one of them has a dihedral angle <= alpha / k <= alpha / 2 at
+// e. So no tets, whatever their inner vertices, have a smallest dihedral angle above
+//     bound(e) = max(smallest dihedral of the tet (e, a1, a2) if it is a valid tet, alpha / 2),
+// and a boundary kept exactly caps the whole mesh at the smallest bound. A sharp edge (alpha below
+// the goal) is the plain case; a wedge under twice the goal whose forced tet is flat is the other.
+
+#include "tet_complex.h"
+
+#include "meshprep/fem/improve_tets.h"
+
+#include <vector>
+
+namespace meshprep::improve {
+
+/// Every boundary edge (an edge of two constrained faces of one region) whose bound is below
+/// `goal_min_dihedral_deg`, lowest bound first.
+std::vector<LimitingBoundaryEdge> limiting_boundary_edges(const TetComplex& mesh, double goal_min_dihedral_deg);
+
+}  // namespace meshprep::improve

@@ -1,0 +1,476 @@
+// Tet improvement (fem/include/meshprep/fem/improve_tets.h and its pieces in fem/src/improve/):
+// the objective, the mesh's bookkeeping, each move alone (volume, boundary and orientation kept
+// exactly), the whole schedule on TetGen's tets, regions, what the surface forbids, and stopping.
+#include "improve/compound_move.h"
+#include "improve/edge_contraction.h"
+#include "improve/tet_complex.h"
+#include "improve/tet_objective.h"
+#include "improve/topological_moves.h"
+#include "improve/vertex_insertion.h"
+#include "improve/vertex_smoothing.h"
+
+#include "meshprep/core/errors.h"
+#include "meshprep/fem/improve_tets.h"
+#include "meshprep/fem/tet_quality.h"
+#include "meshprep/fem/tetrahedralize.h"
+
+#include "tet_test_meshes.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+
+using namespace meshprep;
+using namespace meshprep::improve;
+
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+// The weight of 15 and 160 degrees (ImproveParams' defaults).
+const double kWeight = std::sin(15 * kDegree) / std::sin(20 * kDegree);
+
+double total_volume(const TetMesh& m) {
+  double v = 0;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) v += tet_volume(m, t);
+  return v;
+}
+
+// Every tet positive, by the plain floating-point volume (independent of the exact predicate the
+// improvement relies on; a real inversion is far from round-off).
+bool all_positive(const TetMesh& m) {
+  for (std::size_t t = 0; t < m.tets.size(); ++t)
+    if (!(tet_volume(m, t) > 0)) return false;
+  return true;
+}
+
+// The faces with one tet (or, with `interfaces`, between two regions), each as the coordinates of
+// its corners, oriented out of its tet and rotated to start at its smallest corner: equal lists
+// mean the same boundary, bit for bit, whatever the numbering.
+using FaceGeometry = std::array<double, 9>;
+std::vector<FaceGeometry> faces_of(const TetMesh& m, bool interfaces) {
+  std::map<std::array<std::uint32_t, 3>, std::vector<std::pair<std::size_t, int>>> faces;
+  for (std::size_t t = 0; t < m.tets.size(); ++t)
+    for (int c = 0; c < 4; ++c) {
+      auto f = outward_face(m.tets[t], c);
+      std::sort(f.begin(), f.end());
+      faces[f].push_back({t, c});
+    }
+  std::vector<FaceGeometry> out;
+  for (const auto& [key, owners] : faces) {
+    const bool wanted = interfaces ? owners.size() == 2 && m.tet_regions[owners[0].first] != m.tet_regions[owners[1].first]
+                                   : owners.size() == 1;
+    if (!wanted) continue;
+    for (const auto& [t, c] : owners) {
+      std::array<Vec3, 3> p;
+      const auto f = outward_face(m.tets[t], c);
+      for (int k = 0; k < 3; ++k) p[k] = m.points[f[k]];
+      const auto less = [](const Vec3& a, const Vec3& b) { return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z()); };
+      const int first = static_cast<int>(std::min_element(p.begin(), p.end(), less) - p.begin());
+      FaceGeometry g;
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 3; ++d) g[3 * k + d] = p[(first + k) % 3][d];
+      out.push_back(g);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// cube_tets(n) with its inner points moved at random by up to `jitter` cells, each move kept only
+// if every tet stays positive: a valid mesh with many bad tets. One region unless `regions`.
+TetMesh jittered_cube(int n, double jitter, unsigned seed, bool regions = false) {
+  TetMesh m = test::cube_tets(n);
+  if (!regions) std::fill(m.tet_regions.begin(), m.tet_regions.end(), 1);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-jitter / n, jitter / n);
+  for (Vec3& p : m.points) {
+    const bool inner = p.minCoeff() > 1e-9 && p.maxCoeff() < 1 - 1e-9;
+    const bool interface = regions && std::abs(p.x() - 0.5) < 1e-9;
+    if (!inner || interface) continue;
+    const Vec3 before = p;
+    p += Vec3(offset(random), offset(random), offset(random));
+    if (!all_positive(m)) p = before;
+  }
+  return m;
+}
+
+double worst_quality(const TetComplex& c) {
+  double w = 1;
+  for (TetId t = 0; t < c.tet_slots(); ++t)
+    if (c.alive(t)) w = std::min(w, c.quality(t));
+  return w;
+}
+
+// The six dihedral angles of a tet, from the angle between outward normals (independent of the
+// objective's sine formula).
+std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& p) {
+  const Tetrahedron t{0, 1, 2, 3};
+  std::array<Vec3, 4> n;
+  for (int c = 0; c < 4; ++c) {
+    const auto f = outward_face(t, c);
+    n[c] = (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]);
+  }
+  std::array<double, 6> angles;
+  int k = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) angles[k++] = M_PI - std::atan2(n[a].cross(n[b]).norm(), n[a].dot(n[b]));
+  return angles;
+}
+
+std::array<Vec3, 4> random_positive_tet(std::mt19937& random) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  while (true) {
+    std::array<Vec3, 4> p;
+    for (Vec3& q : p) q = Vec3(u(random), u(random), u(random));
+    if ((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) > 1e-3) return p;
+  }
+}
+
+}  // namespace
+
+TEST(TetObjective, RegularTetScoresTheSineOfItsDihedralAngle) {
+  const Vec3 p0(1, 1, 1), p1(1, -1, -1), p2(-1, 1, -1), p3(-1, -1, 1);
+  const double regular = std::sqrt(8.0 / 9.0);  // sin(acos(1/3))
+  EXPECT_NEAR(biased_min_sine(p0, p2, p1, p3, kWeight), regular, 1e-15);
+  // Scale-free and invariant under rigid motion.
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  for (const double s : {1e-3, 1e3}) {
+    // Far from the origin the coordinates' differences lose |t| / s ulps of the tet's size.
+    const Vec3 t(5e2, -3, 7);
+    const double tolerance = 1e-14 * (1 + t.norm() / s);
+    EXPECT_NEAR(biased_min_sine(s * r * p0 + t, s * r * p2 + t, s * r * p1 + t, s * r * p3 + t, kWeight), regular,
+                tolerance);
+  }
+  // Inverted: negative; flat: zero.
+  EXPECT_LT(biased_min_sine(p0, p1, p2, p3, kWeight), 0);
+  EXPECT_EQ(biased_min_sine(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), kWeight), 0);
+}
+
+TEST(TetObjective, IsTheSmallestSineWithObtuseAnglesWeighted) {
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto p = random_positive_tet(random);
+    double expected = 1;
+    for (const double a : dihedral_angles(p)) expected = std::min(expected, (a > M_PI / 2 ? kWeight : 1.0) * std::sin(a));
+    EXPECT_NEAR(biased_min_sine(p[0], p[1], p[2], p[3], kWeight), expected, 1e-12) << "trial " << trial;
+  }
+}
+
+TEST(TetObjective, GradientMatchesFiniteDifferences) {
+  std::mt19937 random(11);
+  int checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    auto p = random_positive_tet(random);
+    if (trial % 4 == 0) std::swap(p[0], p[1]), std::swap(p[2], p[3]);  // an even permutation
+    const ObjectiveWithGradient g = biased_min_sine_gradient(p[0], p[1], p[2], p[3], kWeight);
+    EXPECT_NEAR(g.value, biased_min_sine(p[0], p[1], p[2], p[3], kWeight), 1e-15);
+    // Central differences, step h: error O(h^2) where the smallest term is smooth; skipped
+    // where two terms are within the step's reach of each other (a kink).
+    const double h = 1e-6;
+    bool smooth = true;
+    Vec3 numeric;
+    for (int d = 0; d < 3; ++d) {
+      Vec3 a = p[3], b = p[3];
+      a[d] += h, b[d] -= h;
+      const double fa = biased_min_sine(p[0], p[1], p[2], a, kWeight), fb = biased_min_sine(p[0], p[1], p[2], b, kWeight);
+      numeric[d] = (fa - fb) / (2 * h);
+      const double fm = g.value, curvature = std::abs(fa + fb - 2 * fm) / (h * h);
+      smooth = smooth && curvature < 1e3;
+    }
+    if (!smooth) continue;
+    ++checked;
+    EXPECT_NEAR((g.gradient - numeric).norm(), 0, 1e-6 * std::max(1.0, numeric.norm())) << "trial " << trial;
+  }
+  EXPECT_GT(checked, 150);
+}
+
+TEST(TetComplex, KnowsNeighboursConstraintsAndFreeVertices) {
+  const TetMesh m = test::cube_tets(4);  // regions split at x = 0.5
+  const TetComplex c(m, kWeight);
+  std::size_t constrained = 0, boundary = 0;
+  for (TetId t = 0; t < c.tet_slots(); ++t)
+    for (int k = 0; k < 4; ++k) {
+      constrained += c.constrained(t, k);
+      boundary += c.neighbour(t, k) == kNoTet;
+      const TetId n = c.neighbour(t, k);
+      if (n == kNoTet) continue;
+      // Neighbours are mutual.
+      int back = 0;
+      for (int j = 0; j < 4; ++j) back += c.neighbour(n, j) == t;
+      EXPECT_EQ(back, 1);
+    }
+  EXPECT_EQ(boundary, 6u * 16 * 2);
+  EXPECT_EQ(constrained, boundary + 2 * 16 * 2);  // and both sides of the 32 interface faces
+  std::size_t free = 0;
+  for (VertexId v = 0; v < c.points(); ++v) free += c.free_vertex(v);
+  EXPECT_EQ(free, 27u - 9u);  // inner points off the interface plane
+}
+
+TEST(TetComplex, RefusesAFaceOfThreeTetsAndOverlappingTets) {
+  TetMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {0.2, 0.2, 2}};
+  m.tets = {{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}};
+  m.tet_regions = {1, 1, 1};
+  EXPECT_THROW(TetComplex(m, kWeight), InvalidInput);
+  m.tets = {{0, 1, 2, 3}, {0, 1, 2, 5}};  // both on the same side of face 012
+  m.tet_regions = {1, 1};
+  EXPECT_THROW(TetComplex(m, kWeight), InvalidInput);
+}
+
+TEST(TetComplex, ReplaceAcceptsOnlyARetriangulationOfTheSameSpace) {
+  // Two tets on the face (0, 1, 2), apexes 3 above and 4 below: the 2-3 flip to the three tets
+  // around the edge 3-4 is valid; variants that invert, leave a gap, overlap or drop a vertex are not.
+  TetMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1}, {0.3, 0.3, -1}};
+  m.tets = {{0, 1, 2, 3}, {0, 2, 1, 4}};
+  m.tet_regions = {1, 1};
+  const std::vector<Tetrahedron> flip = {{0, 1, 4, 3}, {1, 2, 4, 3}, {2, 0, 4, 3}};
+  for (const Tetrahedron& t : flip) {
+    TetMesh one = m;
+    one.tets = {t};
+    ASSERT_GT(tet_volume(one, 0), 0);
+  }
+  const std::vector<std::vector<Tetrahedron>> invalid = {
+      {{0, 1, 3, 4}, {1, 2, 4, 3}, {2, 0, 4, 3}},  // one inverted
+      {{0, 1, 4, 3}, {1, 2, 4, 3}},                // a gap
+      {{0, 1, 4, 3}, {1, 2, 4, 3}, {2, 0, 4, 3}, {0, 1, 2, 3}},  // an overlap
+      {{0, 1, 2, 3}, {0, 1, 2, 3}}};               // a tet twice
+  TetComplex c(m, kWeight);
+  for (const auto& fresh : invalid) {
+    EXPECT_FALSE(c.replace({0, 1}, fresh));
+    EXPECT_TRUE(c.alive(0) && c.alive(1));
+    EXPECT_EQ(c.tet(0), m.tets[0]);
+  }
+  // The same flip where the edge 3-4 misses the triangle: faces match, but one tet is inverted
+  // (only the exact orientation test tells).
+  TetMesh skew = m;
+  skew.points[3] = {0.8, 0.8, 1};
+  skew.points[4] = {0.8, 0.8, -1};
+  TetComplex s(skew, kWeight);
+  EXPECT_FALSE(s.replace({0, 1}, flip));
+  ASSERT_TRUE(c.replace({0, 1}, flip));
+  const TetMesh after = c.to_mesh(m);
+  EXPECT_EQ(after.tets.size(), 3u);
+  EXPECT_NEAR(total_volume(after), total_volume(m), 1e-15);
+  EXPECT_EQ(faces_of(after, false), faces_of(m, false));
+  // Undo with the old ids: the mesh is as before, ids included.
+  const std::vector<TetId> created = c.created();
+  const std::vector<TetId> old_ids = {0, 1};
+  ASSERT_TRUE(c.replace(created, m.tets, &old_ids));
+  EXPECT_EQ(c.live_tets(), 2u);
+  EXPECT_EQ(c.tet(0), m.tets[0]);
+  EXPECT_EQ(c.tet(1), m.tets[1]);
+}
+
+namespace {
+
+enum class MoveKind { EdgeRemoval, MultiFaceRemoval, Smoothing, Contraction, Compound, Insertion };
+const char* name_of(MoveKind k) {
+  switch (k) {
+    case MoveKind::EdgeRemoval: return "EdgeRemoval";
+    case MoveKind::MultiFaceRemoval: return "MultiFaceRemoval";
+    case MoveKind::Smoothing: return "Smoothing";
+    case MoveKind::Contraction: return "Contraction";
+    case MoveKind::Compound: return "Compound";
+    default: return "Insertion";
+  }
+}
+
+// One sweep of a single kind of move over every tet, worst first; the moves applied.
+std::size_t sweep(TetComplex& c, MoveKind kind) {
+  std::vector<TetId> order;
+  for (TetId t = 0; t < c.tet_slots(); ++t) order.push_back(t);
+  std::sort(order.begin(), order.end(), [&](TetId a, TetId b) { return c.quality(a) < c.quality(b); });
+  std::size_t applied = 0;
+  std::vector<TetId> changed;
+  for (const TetId t : order) {
+    if (!c.alive(t)) continue;
+    const Tetrahedron tet = c.tet(t);
+    bool done = false;
+    switch (kind) {
+      case MoveKind::EdgeRemoval:
+      case MoveKind::Compound:
+        for (int i = 0; i < 4 && !done; ++i)
+          for (int j = i + 1; j < 4 && !done; ++j) {
+            const Move m = edge_removal(c, t, tet[i], tet[j], 10);
+            if (kind == MoveKind::EdgeRemoval) done = m.improves() && c.replace(m.old, m.fresh);
+            else done = !m.fresh.empty() && !m.improves() && move_and_smooth(c, m, changed);
+          }
+        break;
+      case MoveKind::MultiFaceRemoval:
+        for (int k = 0; k < 4 && !done; ++k) {
+          const Move m = multi_face_removal(c, t, k, 12);
+          done = m.improves() && c.replace(m.old, m.fresh);
+        }
+        break;
+      case MoveKind::Smoothing:
+        for (const VertexId v : tet) done = (c.free_vertex(v) && smooth_vertex(c, v)) || done;
+        break;
+      case MoveKind::Contraction:
+        for (const VertexId v : tet) {
+          if (done || !c.free_vertex(v)) continue;
+          const Move m = best_contraction(c, v);
+          done = m.improves() && c.remove_vertex(v, m.old, m.fresh);
+        }
+        break;
+      case MoveKind::Insertion:
+        done = insert_vertex(c, t, 24);
+        break;
+    }
+    applied += done;
+  }
+  return applied;
+}
+
+class EachMove : public ::testing::TestWithParam<MoveKind> {};
+
+}  // namespace
+
+TEST_P(EachMove, KeepsVolumeBoundaryAndOrientationExactly) {
+  const TetMesh before = jittered_cube(4, 0.45, 3);
+  ASSERT_TRUE(all_positive(before));
+  TetComplex c(before, kWeight);
+  const double worst_before = worst_quality(c);
+  const std::size_t applied = sweep(c, GetParam());
+  EXPECT_GT(applied, 0u) << "the jittered cube has bad tets every move can raise";
+  const TetMesh after = c.to_mesh(before);
+  EXPECT_TRUE(all_positive(after));
+  // Each move replaces tets by tets filling the same space: the sums differ by round-off only.
+  EXPECT_NEAR(total_volume(after), total_volume(before), 1e-14);
+  EXPECT_EQ(faces_of(after, false), faces_of(before, false));
+  EXPECT_GE(worst_quality(c), worst_before);
+  EXPECT_NO_THROW(TetComplex(after, kWeight));  // no face of three tets, no overlap
+}
+
+INSTANTIATE_TEST_SUITE_P(Moves, EachMove,
+                         ::testing::Values(MoveKind::EdgeRemoval, MoveKind::MultiFaceRemoval, MoveKind::Smoothing,
+                                           MoveKind::Contraction, MoveKind::Compound, MoveKind::Insertion),
+                         [](const auto& param_info) { return std::string(name_of(param_info.param)); });
+
+TEST(Smoothing, NeverInvertsATetUnderRandomPerturbations) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const TetMesh m = jittered_cube(3, 0.49, seed);
+    TetComplex c(m, kWeight);
+    std::vector<TetId> star;
+    for (int round = 0; round < 3; ++round)
+      for (VertexId v = 0; v < c.points(); ++v) {
+        if (!c.free_vertex(v)) continue;
+        c.star(v, star);
+        double worst = 1;
+        for (const TetId t : star) worst = std::min(worst, c.quality(t));
+        smooth_vertex(c, v);
+        double now = 1;
+        for (const TetId t : star) now = std::min(now, c.quality(t));
+        EXPECT_GE(now, worst) << "seed " << seed;
+      }
+    EXPECT_TRUE(all_positive(c.to_mesh(m))) << "seed " << seed;
+  }
+}
+
+TEST(ImproveTets, RemovesASliverBetweenFourSurfaceVertices) {
+  // A bipyramid over a square whose corners go up and down by 2 % of its side: the sliver of the
+  // four corners (no face on the surface), the two tets above its upper diagonal and the two
+  // below its lower one. All six points are on the surface; only flips can help.
+  TetMesh m;
+  const double d = 0.02;
+  m.points = {{0, 0, d}, {1, 0, -d}, {1, 1, d}, {0, 1, -d}, {0.5, 0.5, 1}, {0.5, 0.5, -1}};
+  m.tets = {{0, 1, 2, 3}, {4, 0, 1, 2}, {4, 0, 2, 3}, {5, 1, 2, 3}, {5, 1, 3, 0}};
+  m.tet_regions.assign(m.tets.size(), 1);
+  for (std::size_t t = 0; t < m.tets.size(); ++t)
+    if (tet_volume(m, t) < 0) std::swap(m.tets[t][2], m.tets[t][3]);
+  ASSERT_TRUE(all_positive(m));
+  const TetQualityReport before = analyze_tet_quality(m);
+  ASSERT_LT(before.min_dihedral_deg.min, 5);
+  const auto boundary = faces_of(m, false);
+  const double volume = total_volume(m);
+  const ImproveResult r = improve_tets(m);
+  EXPECT_EQ(faces_of(m, false), boundary);
+  EXPECT_NEAR(total_volume(m), volume, 1e-15);
+  EXPECT_TRUE(all_positive(m));
+  EXPECT_GT(r.min_dihedral_after_deg, 15);
+  EXPECT_EQ(r.stopped_by, "goal reached");
+  EXPECT_EQ(analyze_tet_quality(m).min_dihedral_deg.min, r.min_dihedral_after_deg);
+}
+
+TEST(ImproveTets, TetGensTetsOfASphereReachTheGoalAtAnyScale) {
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    TriangleSoup sphere = test::icosphere(3, scale);
+    TetParams params;
+    params.keep_surface = true;
+    TetMesh tets = tetrahedralize_plc(plc_from_surface(sphere), params);
+    const auto boundary = faces_of(tets, false);
+    const double volume = total_volume(tets);
+    const ImproveResult r = improve_tets(tets);
+    EXPECT_LT(r.min_dihedral_before_deg, 15) << scale;  // TetGen's slivers
+    EXPECT_EQ(r.stopped_by, "goal reached") << scale;
+    EXPECT_GE(r.min_dihedral_after_deg, 15) << scale;
+    EXPECT_LE(r.max_dihedral_after_deg, 160) << scale;
+    EXPECT_EQ(r.below_goal_after, 0u) << scale;
+    EXPECT_EQ(faces_of(tets, false), boundary) << scale;
+    EXPECT_NEAR(total_volume(tets), volume, 1e-12 * volume) << scale;
+    EXPECT_TRUE(all_positive(tets)) << scale;
+    EXPECT_EQ(r.limiting_edge_count, 0u) << scale;
+  }
+}
+
+TEST(ImproveTets, KeepsRegionsInterfacesAndTags) {
+  TetMesh m = jittered_cube(4, 0.45, 5, /*regions=*/true);
+  const auto boundary = faces_of(m, false), interfaces = faces_of(m, true);
+  const std::vector<Triangle> tagged = m.boundary_faces;
+  const std::vector<int> tags = m.boundary_tags;
+  std::map<int, double> volume;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) volume[m.tet_regions[t]] += tet_volume(m, t);
+  const ImproveResult r = improve_tets(m);
+  EXPECT_GT(r.min_dihedral_after_deg, r.min_dihedral_before_deg);
+  EXPECT_EQ(faces_of(m, false), boundary);
+  EXPECT_EQ(faces_of(m, true), interfaces);
+  std::map<int, double> after;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) after[m.tet_regions[t]] += tet_volume(m, t);
+  ASSERT_EQ(after.size(), 2u);
+  for (const auto& [region, v] : volume) EXPECT_NEAR(after[region], v, 1e-14) << region;
+  // No point of a constrained face moved or was renumbered: the tagged faces still name them.
+  EXPECT_EQ(m.boundary_faces, tagged);
+  EXPECT_EQ(m.boundary_tags, tags);
+}
+
+TEST(ImproveTets, NamesTheEdgesWhereTheSurfaceForbidsTheGoal) {
+  // A prism over a triangle with a 10-degree corner: its edge there is sharper than any goal.
+  const double a = 10 * kDegree;
+  TriangleSoup prism;
+  prism.points = {{0, 0, 0}, {1, 0, 0}, {std::cos(a), std::sin(a), 0}, {0, 0, 1}, {1, 0, 1}, {std::cos(a), std::sin(a), 1}};
+  prism.triangles = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {2, 0, 3}, {2, 3, 5}};
+  TetParams params;
+  params.keep_surface = false;
+  TetMesh tets = tetrahedralize_plc(plc_from_surface(prism), params);
+  const ImproveResult r = improve_tets(tets);
+  ASSERT_GE(r.limiting_edge_count, 1u);
+  EXPECT_NEAR(r.limiting_edges.front().interior_angle_deg, 10, 1e-9);
+  EXPECT_LE(r.surface_bound_deg, 10 + 1e-9);
+  EXPECT_NEAR(r.limiting_edges.front().midpoint.x(), 0, 1e-12);  // on the edge x = y = 0
+  EXPECT_NEAR(r.limiting_edges.front().midpoint.y(), 0, 1e-12);
+  EXPECT_LE(r.min_dihedral_after_deg, r.surface_bound_deg + 1e-9);  // the bound holds
+}
+
+TEST(ImproveTets, CancellationLeavesTheMeshUnchanged) {
+  TetMesh m = jittered_cube(3, 0.45, 9);
+  const TetMesh copy = m;
+  ImproveParams params;
+  params.cancelled = [] { return true; };
+  EXPECT_THROW(improve_tets(m, params), Cancelled);
+  EXPECT_EQ(m.tets, copy.tets);
+  EXPECT_EQ(m.points, copy.points);
+}
+
+TEST(ImproveTets, RefusesGoalsOutOfRange) {
+  TetMesh m = test::cube_tets(1);
+  for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{{0, 160}, {60, 160}, {15, 60}, {15, 180}}) {
+    ImproveParams params;
+    params.goal_min_dihedral_deg = lo;
+    params.goal_max_dihedral_deg = hi;
+    EXPECT_THROW(improve_tets(m, params), InvalidInput) << lo << " " << hi;
+  }
+}
