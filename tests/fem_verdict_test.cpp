@@ -43,6 +43,8 @@ TEST(FemVerdict, KuhnTetsPassEveryThreshold) {
   EXPECT_EQ(v.checks[2].check, "max_inverted_tets");
   EXPECT_EQ(v.checks[2].value, 0.0);
   EXPECT_EQ(describe(v.checks[1]), "largest dihedral angle 90 deg <= 165 deg (max_dihedral_deg)");
+  EXPECT_EQ(requirement(v.checks[0]), "smallest dihedral angle >= 10 deg");
+  EXPECT_EQ(requirement(v.checks[2]), "inverted tets <= 0");
 }
 
 TEST(FemVerdict, OneTwoDegreeSliverFailsBothAngleThresholds) {

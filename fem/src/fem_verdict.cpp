@@ -20,6 +20,13 @@ constexpr CheckText kChecks[] = {{"min_dihedral_deg", "smallest dihedral angle",
                                  {"max_dihedral_deg", "largest dihedral angle", " deg", false},
                                  {"max_inverted_tets", "inverted tets", "", false}};
 
+// The text of a check judge_tets made; null for a name it does not make.
+const CheckText* text_of(const ThresholdCheck& check) {
+  for (const CheckText& t : kChecks)
+    if (check.check == t.name) return &t;
+  return nullptr;
+}
+
 ThresholdCheck judged(const CheckText& text, double threshold, double value) {
   // NaN compares false both ways: no figure never passes.
   return {text.name, threshold, value, text.at_least ? value >= threshold : value <= threshold};
@@ -49,15 +56,19 @@ TetVerdict judge_tets(const TetQualityReport& report, const TetThresholds& thres
   return verdict;
 }
 
+std::string requirement(const ThresholdCheck& check) {
+  const CheckText* t = text_of(check);
+  if (!t) return check.check + " " + format_number(check.threshold, 4);
+  return std::string(t->figure) + (t->at_least ? " >= " : " <= ") + format_number(check.threshold, 4) + t->unit;
+}
+
 std::string describe(const ThresholdCheck& check) {
   const std::string value = std::isnan(check.value) ? "undefined (no tets)" : format_number(check.value, 4);
-  for (const CheckText& t : kChecks)
-    if (check.check == t.name) {
-      const char* relation = t.at_least ? (check.ok ? " >= " : " < ") : (check.ok ? " <= " : " > ");
-      return std::string(t.figure) + " " + value + (std::isnan(check.value) ? "" : t.unit) + relation +
-             format_number(check.threshold, 4) + t.unit + " (" + check.check + ")";
-    }
-  return check.check + " " + value + (check.ok ? " within " : " beyond ") + format_number(check.threshold, 4);
+  const CheckText* t = text_of(check);
+  if (!t) return check.check + " " + value + (check.ok ? " within " : " beyond ") + format_number(check.threshold, 4);
+  const char* relation = t->at_least ? (check.ok ? " >= " : " < ") : (check.ok ? " <= " : " > ");
+  return std::string(t->figure) + " " + value + (std::isnan(check.value) ? "" : t->unit) + relation +
+         format_number(check.threshold, 4) + t->unit + " (" + check.check + ")";
 }
 
 nlohmann::ordered_json to_json(const ThresholdCheck& check) {

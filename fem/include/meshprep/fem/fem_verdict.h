@@ -50,6 +50,9 @@ struct TetVerdict {
 /// the angle checks (there is nothing to solve on).
 TetVerdict judge_tets(const TetQualityReport& report, const TetThresholds& thresholds = {});
 
+/// The threshold as a requirement: "smallest dihedral angle >= 10 deg".
+std::string requirement(const ThresholdCheck& check);
+
 /// One line for a person: "smallest dihedral angle 0.78 deg < 10 deg (min_dihedral_deg)" when the
 /// check fails, "... >= 10 deg ..." when it holds.
 std::string describe(const ThresholdCheck& check);
