@@ -12,7 +12,7 @@ while read -r label input options; do
   for run in 1 2 3; do
     # shellcheck disable=SC2086 # options are words
     /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" pipeline "$input" -o "$work/out" $options --quiet \
-      --json "$work/summary.json"
+      --json "$work/summary.json" || not_fem_ready $?
     python3 - "$label" "$run" "$work/time.txt" "$work/summary.json" <<'PY'
 import json, sys
 label, run, timing, summary = sys.argv[1:5]

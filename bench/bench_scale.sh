@@ -28,7 +28,7 @@ measure() {
     pipeline) set -- pipeline "$input" -o "$work/out" --ratio 0.1 --quiet --json "$work/out.json" ;;
     pipeline-fixed) set -- pipeline "$input" -o "$work/out" --target-faces 7540 --quiet --json "$work/out.json" ;;
   esac
-  /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" "$@" --threads "$threads" > /dev/null
+  /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" "$@" --threads "$threads" > /dev/null || not_fem_ready $?
   echo "$(awk 'NR > 1 && !/^#/ && NF { print $2; exit }' "$input") $(cat "$work/time.txt")"
 }
 
