@@ -16,7 +16,7 @@ while read -r label input options; do
     python3 - "$label" "$run" "$work/time.txt" "$work/summary.json" <<'PY'
 import json, sys
 label, run, timing, summary = sys.argv[1:5]
-wall, peak_kb = open(timing).read().split()
+wall, peak_kb = open(timing).read().split()[-2:]  # after "Command exited with non-zero status 1"
 j = json.load(open(summary))
 stages = ", ".join("%s %.2f" % (s["name"], s["seconds"]) for s in j["stages"] if s["ran"])
 q = j["quality"]
