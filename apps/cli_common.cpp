@@ -2,6 +2,7 @@
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/quality/number_format.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -34,6 +35,41 @@ void add_samples_option(CLI::App& cmd, std::size_t& samples) {
 void add_threads_option(CLI::App& cmd, std::size_t& threads) {
   cmd.add_option("--threads", threads, "Threads for the parallel parts (default: all cores)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1024}));
+}
+
+TetThresholds ThresholdFlags::applied_to(TetThresholds thresholds) const {
+  if (min_dihedral_deg) thresholds.min_dihedral_deg = *min_dihedral_deg;
+  if (max_dihedral_deg) thresholds.max_dihedral_deg = *max_dihedral_deg;
+  if (max_inverted_tets) thresholds.max_inverted_tets = *max_inverted_tets;
+  return thresholds;
+}
+
+void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags) {
+  const TetThresholds defaults;
+  const auto text = [](double v) { return format_number(v, 6); };
+  cmd.add_option("--min-dihedral-threshold", flags.min_dihedral_deg,
+                 "FEM-ready only if the smallest dihedral angle is at least DEG (default " +
+                     text(defaults.min_dihedral_deg) + "; else exit 1, files written)")
+      ->check(CLI::Range(0.0, 180.0));
+  cmd.add_option("--max-dihedral-threshold", flags.max_dihedral_deg,
+                 "FEM-ready only if the largest dihedral angle is at most DEG (default " +
+                     text(defaults.max_dihedral_deg) + ")")
+      ->check(CLI::Range(0.0, 180.0));
+  cmd.add_option("--max-inverted-tets", flags.max_inverted_tets,
+                 "FEM-ready only if at most N tets are inverted or flat (default " +
+                     std::to_string(defaults.max_inverted_tets) + ")")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1000000000}));
+}
+
+void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks) {
+  for (const ThresholdCheck& c : checks)
+    if (!c.ok) std::cerr << "meshprep: " << input << ": not FEM-ready: " << describe(c) << '\n';
+}
+
+std::string failed_names(const TetVerdict& verdict) {
+  std::string names;
+  for (const ThresholdCheck& c : verdict.failed()) names += (names.empty() ? "" : ", ") + c.check;
+  return names;
 }
 
 ThreadLimit::ThreadLimit(std::size_t threads)

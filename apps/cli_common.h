@@ -2,6 +2,7 @@
 // Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
 
 #include "meshprep/core/io.h"
+#include "meshprep/fem/fem_verdict.h"
 #include "meshprep/quality/report.h"
 
 #include <CLI/CLI.hpp>
@@ -9,7 +10,9 @@
 #include <tbb/global_control.h>
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace meshprep::cli {
 
@@ -39,6 +42,25 @@ void add_samples_option(CLI::App& cmd, std::size_t& samples);
 
 /// Registers --threads on `cmd`: threads for the parallel parts, bound to `threads` (0: all cores).
 void add_threads_option(CLI::App& cmd, std::size_t& threads);
+
+/// The FEM verdict's thresholds as given on the command line; an unset flag leaves the value it
+/// is applied to (TetThresholds' default, or the pipeline configuration's).
+struct ThresholdFlags {
+  std::optional<double> min_dihedral_deg, max_dihedral_deg;
+  std::optional<std::size_t> max_inverted_tets;
+  /// `thresholds` with the flags that were given.
+  TetThresholds applied_to(TetThresholds thresholds) const;
+};
+
+/// Registers --min-dihedral-threshold, --max-dihedral-threshold and --max-inverted-tets on `cmd`,
+/// bound to `flags`; the help gives TetThresholds' defaults.
+void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags);
+
+/// Prints "meshprep: INPUT: not FEM-ready: <describe(check)>" to stderr for every failed check.
+void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks);
+
+/// The names of the failed checks, comma-separated: "min_dihedral_deg, max_dihedral_deg".
+std::string failed_names(const TetVerdict& verdict);
 
 /// While alive, the parallel parts (TBB) run on at most `threads` threads (0: all cores).
 class ThreadLimit {

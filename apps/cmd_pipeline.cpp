@@ -1,6 +1,7 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--target-faces N | --ratio R]
-//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2] [--threads N]
-//   [--quiet] [--json FILE|-] [--print-config]
+//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2]
+//   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
+//   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
@@ -9,6 +10,7 @@
 #include "meshprep/pipeline/pipeline.h"
 #include "meshprep/pipeline/pipeline_config.h"
 #include "meshprep/pipeline/pipeline_outputs.h"
+#include "meshprep/quality/quality_gate.h"
 
 #include <filesystem>
 #include <iomanip>
@@ -21,7 +23,8 @@ namespace meshprep::cli {
 namespace {
 
 struct PipelineOptions {
-  std::string input, outdir, config, json, format, msh_version;
+  std::string input, outdir, config, json, format, msh_version, fail_on;
+  ThresholdFlags thresholds;
   double ratio = 0, extrude_base = 0;
   std::size_t target_faces = 0, threads = 0;
   unsigned timeout = 0;
@@ -41,6 +44,7 @@ PipelineConfig effective_config(const PipelineOptions& o) {
   if (!o.format.empty()) config.tetrahedralize.format = o.format;
   if (!o.msh_version.empty())
     config.tetrahedralize.export_options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+  config.verdict = o.thresholds.applied_to(config.verdict);
   return config;
 }
 
@@ -68,6 +72,32 @@ void print_config_keys() {
               << " |\n";
 }
 
+// "FEM-ready: smallest dihedral angle 12.3 deg >= 10 deg (min_dihedral_deg), ...".
+std::string verdict_line(const std::vector<ThresholdCheck>& checks) {
+  std::string line = "FEM-ready:";
+  for (std::size_t i = 0; i < checks.size(); ++i) line += (i ? ", " : " ") + describe(checks[i]);
+  return line;
+}
+
+// The outputs are written: success, or exit 1 with one line per failed threshold and per --fail-on
+// condition that holds, then the one "failed" line saying that the files are there.
+int exit_code(const PipelineOptions& o, const PipelineResult& result, const PipelineConfig& config,
+              const std::vector<GateCondition>& held) {
+  std::string reasons;
+  if (!result.fem.ready && config.tetrahedralize.enabled) {
+    print_failed_thresholds(o.input, result.fem.checks);
+    reasons = "not FEM-ready: " + (result.tets ? "the tets fail " + failed_names(TetVerdict{result.fem.checks}) + " (above)"
+                                               : result.fem.problems.front());
+  }
+  for (const GateCondition& c : held)
+    std::cerr << "meshprep: " << o.input << ": --fail-on: " << c.text << " holds (is " << c.actual.dump() << ")\n";
+  if (!held.empty())
+    reasons += (reasons.empty() ? "" : "; ") + std::to_string(held.size()) + " --fail-on condition(s) hold (above)";
+  if (reasons.empty()) return kSuccess;
+  throw WorkFailed(o.input + ": " + reasons + "; the outputs are written in " + o.outdir + " (see " +
+                   (std::filesystem::path(o.outdir) / "report.html").string() + ")");
+}
+
 int run_pipeline_command(const PipelineOptions& o) {
   if (o.config_keys) {
     print_config_keys();
@@ -79,6 +109,10 @@ int run_pipeline_command(const PipelineOptions& o) {
     return kSuccess;
   }
   if (o.input.empty() || o.outdir.empty()) throw InvalidInput("pipeline: give the input and -o OUTDIR (see --help)");
+  // A typo in the gate is a usage error, found before any work: its keys are looked up in the
+  // summary of an empty run (what that leaves null, the tets' figures, is looked up after the run).
+  const std::vector<GateCondition> gate = o.fail_on.empty() ? std::vector<GateCondition>{} : parse_quality_gate(o.fail_on);
+  if (!gate.empty()) failed_conditions(gate, pipeline_summary(PipelineResult{}, config));
   if (!std::filesystem::exists(o.input)) throw IoError(o.input + ": cannot read: no such file");
   for (const char* name : {"surface.ply", "report.html", "report.json", "report.vtu", "pipeline.json"})
     ensure_not_input((std::filesystem::path(o.outdir) / name).string(), o.input);
@@ -119,16 +153,15 @@ int run_pipeline_command(const PipelineOptions& o) {
   run["threads"] = parallelism.threads();
   run["versions"] = build_versions();
   const std::vector<std::string> files = write_pipeline_outputs(result, config, o.outdir, run);
-  if (!o.json.empty()) emit_json(pipeline_summary(result, config), o.json);
+  const nlohmann::ordered_json summary = pipeline_summary(result, config);
+  if (!o.json.empty()) emit_json(summary, o.json);
   if (!o.quiet) {
     log << "wrote " << o.outdir << ":";
     for (const std::string& f : files) log << ' ' << f;
     log << " (" << std::fixed << std::setprecision(1) << result.seconds << " s)" << std::endl;
+    if (result.fem.ready) log << verdict_line(result.fem.checks) << std::endl;
   }
-  if (!result.fem.ready && config.tetrahedralize.enabled)
-    throw WorkFailed(o.input + ": not FEM-ready: " + result.fem.problems.front() + " (see " +
-                     (std::filesystem::path(o.outdir) / "report.html").string() + ")");
-  return kSuccess;
+  return exit_code(o, result, config, gate.empty() ? gate : failed_conditions(gate, summary));
 }
 
 }  // namespace
@@ -158,6 +191,10 @@ Action add_pipeline_command(CLI::App& app) {
       ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
+  add_threshold_options(*cmd, o->thresholds);
+  cmd->add_option("--fail-on", o->fail_on,
+                  "Exit 1 (the outputs written) if any condition on report.json holds, as quality --fail-on, e.g. "
+                  "\"tets.tet_quality.min_dihedral_deg.p5<20,quality.radius_ratio.p95>2\"");
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--timeout", o->timeout,
                   "Stop after this many seconds (exit 1, nothing written); Ctrl-C stops at the next safe point (exit 130)")

@@ -1,7 +1,8 @@
 // meshprep tetrahedralize SURFACE -o OUT [--radius-edge R] [--min-dihedral DEG]
 //   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary]
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
-//   [--fem-check] [--timeout SECONDS] [--threads N] [--json FILE|-]
+//   [--fem-check] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
+//   [--timeout SECONDS] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
 
@@ -28,6 +29,7 @@ namespace {
 struct TetOptions {
   std::string input, output, json, target, diagnose, msh_version = "4.1";
   TetParams params;
+  ThresholdFlags thresholds;
   double extrude_depth = 0, extrude_relative = 0;
   bool binary = false, fem_check = false;
   unsigned timeout = 0;
@@ -66,6 +68,7 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
   json["readiness"] = to_json(readiness);
   if (!readiness.ready()) {
     if (!o.diagnose.empty()) write_soup(diagnosis_mesh(soup, readiness), o.diagnose);
+    json["fem_ready"] = false;
     if (!o.json.empty()) emit_json(json, o.json);
     std::string reasons;
     for (const ReadinessProblem& p : readiness.problems) {
@@ -118,6 +121,7 @@ int run_tetrahedralize(const TetOptions& o) {
     throw stopped();
   } catch (const TetgenError& e) {
     json["tetgen_error"] = {{"code", e.code()}, {"message", e.what()}};
+    json["fem_ready"] = false;
     if (!o.json.empty()) emit_json(json, o.json);
     throw WorkFailed(o.input + ": " + e.what());
   }
@@ -125,7 +129,10 @@ int run_tetrahedralize(const TetOptions& o) {
   arm_timeout(0);  // from here on the outputs are written whole
   json["tetgen_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const TetQualityReport quality = analyze_tet_quality(tets);
+  const TetVerdict verdict = judge_tets(quality, o.thresholds.applied_to({}));
   json["tet_quality"] = to_json(quality);
+  json["fem_ready"] = verdict.ok();
+  json["thresholds"] = to_json(verdict);
   if (o.fem_check) {
     progress("FEM check: P1 Poisson solve on " + std::to_string(tets.tets.size()) + " tets ...");
     json["fem_check"] = to_json(run_fem_check(tets));
@@ -136,14 +143,18 @@ int run_tetrahedralize(const TetOptions& o) {
     std::cout << o.input << " -> " << o.output << ": " << quality.tetrahedra << " tets, " << quality.points
               << " points, volume " << quality.volume << "\n  min dihedral " << quality.min_dihedral_deg.min
               << " deg, tets under 10 deg " << 100 * quality.tets_min_dihedral_below_10 << " %, radius-edge max "
-              << quality.radius_edge_ratio.max << '\n';
+              << quality.radius_edge_ratio.max << ", scaled Jacobian min " << quality.scaled_jacobian.min << '\n';
+    if (verdict.ok()) std::cout << "  FEM-ready: every threshold holds\n";
     if (o.fem_check) {
       const auto& f = json["fem_check"];
       std::cout << "  FEM check: patch test error " << f["patch_test_max_error"] << ", Poisson L2 error "
                 << f["poisson_l2_error"] << '\n';
     }
   }
-  return kSuccess;
+  if (verdict.ok()) return kSuccess;
+  print_failed_thresholds(o.input, verdict.checks);
+  throw WorkFailed(o.input + ": not FEM-ready: the tets fail " + failed_names(verdict) + " (above); " + o.output +
+                   " is written");
 }
 
 }  // namespace
@@ -180,6 +191,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
       ->check(CLI::Range(1e-9, 100.0))
       ->excludes(depth);
   cmd->add_flag("--fem-check", o->fem_check, "Solve a P1 Poisson problem with a known solution on the tets and report errors");
+  add_threshold_options(*cmd, o->thresholds);
   cmd->add_option("--timeout", o->timeout,
                   "Stop TetGen after this many seconds (exit 1, nothing written); Ctrl-C stops it too (exit 130)")
       ->check(CLI::Range(1u, 1000000u));

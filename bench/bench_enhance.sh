@@ -42,7 +42,8 @@ echo "| femur surface for TetGen | tets | smallest dihedral | tets under 10° | 
 echo "| --- | --- | --- | --- | --- |"
 for surface in "raw:$data/femur.off" "enhanced:$work/femur.off"; do
   for keep in "" --keep-surface; do
-    "$bin" tetrahedralize "${surface#*:}" -o "$work/tets.vtu" --json "$work/t.json" $keep > /dev/null
+    "$bin" tetrahedralize "${surface#*:}" -o "$work/tets.vtu" --json "$work/t.json" $keep > /dev/null ||
+      not_fem_ready $?
     python3 - "${surface%%:*}${keep:+ $keep}" "$work/t.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[2])); t = j["tet_quality"]

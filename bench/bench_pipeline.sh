@@ -12,11 +12,11 @@ while read -r label input options; do
   for run in 1 2 3; do
     # shellcheck disable=SC2086 # options are words
     /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" pipeline "$input" -o "$work/out" $options --quiet \
-      --json "$work/summary.json"
+      --json "$work/summary.json" || not_fem_ready $?
     python3 - "$label" "$run" "$work/time.txt" "$work/summary.json" <<'PY'
 import json, sys
 label, run, timing, summary = sys.argv[1:5]
-wall, peak_kb = open(timing).read().split()
+wall, peak_kb = open(timing).read().split()[-2:]  # after "Command exited with non-zero status 1"
 j = json.load(open(summary))
 stages = ", ".join("%s %.2f" % (s["name"], s["seconds"]) for s in j["stages"] if s["ran"])
 q = j["quality"]

@@ -28,8 +28,8 @@ measure() {
     pipeline) set -- pipeline "$input" -o "$work/out" --ratio 0.1 --quiet --json "$work/out.json" ;;
     pipeline-fixed) set -- pipeline "$input" -o "$work/out" --target-faces 7540 --quiet --json "$work/out.json" ;;
   esac
-  /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" "$@" --threads "$threads" > /dev/null
-  echo "$(awk 'NR > 1 && !/^#/ && NF { print $2; exit }' "$input") $(cat "$work/time.txt")"
+  /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" "$@" --threads "$threads" > /dev/null || not_fem_ready $?
+  echo "$(awk 'NR > 1 && !/^#/ && NF { print $2; exit }' "$input") $(tail -1 "$work/time.txt")"  # time's last line: a non-zero exit adds one before
 }
 
 echo "| command | faces | wall (s) | µs per face | growth vs 75 k | peak memory | bytes per face | stages (s) |"

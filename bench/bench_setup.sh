@@ -9,3 +9,8 @@ data=$root/../shared/data/meshes
 [ -d "$root/../shared/data/$2" ] || { echo "skipped: $root/../shared/data/$2 not found"; exit 0; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+# For a timed meshprep run: `COMMAND... || not_fem_ready $?` lets exit 1 pass, which is tets written
+# that miss a threshold of the FEM verdict (TetGen alone misses 10 degrees on most meshes, issue 29)
+# and still a run to time; any other code stops the script as set -e would.
+not_fem_ready() { return $(($1 == 1 ? 0 : $1)); }

@@ -16,7 +16,9 @@ for m in femur bunny00; do
   cp "$data/$m.off" "$work/$m.off"
   t0=$(date +%s.%N); tetgen -pq1.414Q "$work/$m.off" > /dev/null; t1=$(date +%s.%N)
   tets=$(head -1 "$work/$m.1.ele" | awk '{print $1}')
-  "$bin" tetrahedralize "$work/$m.off" -o "$work/$m.mp.node" --json "$work/$m.json" > /dev/null; t2=$(date +%s.%N)
+  # Exit 1 with the tets written: not FEM-ready (TetGen's slivers, issue 29), still a run to time.
+  "$bin" tetrahedralize "$work/$m.off" -o "$work/$m.mp.node" --json "$work/$m.json" > /dev/null || [ $? -eq 1 ]
+  t2=$(date +%s.%N)
   mp_tets=$(python3 -c "import json; print(json.load(open('$work/$m.json'))['tet_quality']['tetrahedra'])")
   python3 -c "
 a, b = $t1 - $t0, $t2 - $t1

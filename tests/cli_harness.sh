@@ -7,3 +7,9 @@ passed=0 failed=0
 ok() { passed=$((passed + 1)); }
 bad() { failed=$((failed + 1)); echo "FAIL: $*"; cat err.txt 2>/dev/null; }
 expect_exit() { [ "$2" = "$3" ] && ok || bad "$1: exit $3, expected $2"; }
+# Whether err.txt has the two lines of the verdict on cli_meshes.py's 2-degree sliver (one per
+# failed threshold, figure against threshold).
+has_sliver_verdict() {
+  grep -qx "meshprep: sliver.off: not FEM-ready: smallest dihedral angle 2.005 deg < 10 deg (min_dihedral_deg)" err.txt &&
+    grep -qx "meshprep: sliver.off: not FEM-ready: largest dihedral angle 177.2 deg > 165 deg (max_dihedral_deg)" err.txt
+}

@@ -9,6 +9,8 @@ Usage: cli_meshes.py NAME...   (NAME.off is written for each)
   fin        the cube with a fin on an edge (a non-manifold edge)
   terrain    an 8 x 8 grid on z = 0.3 sin(x) cos(y) (an open height field, one boundary loop)
   holed      a 4 x 4 grid without its middle 2 x 2 cells (two boundary loops)
+  sliver     a closed tet of 4 triangles whose smallest dihedral angle is 2.005 degrees (largest
+             177.2): (0,0,0), (1,1,0), (0,1,h), (1,0,h), h = 0.0175 (tet_quality_test's SliverByHand)
 """
 import math
 import sys
@@ -39,6 +41,8 @@ def meshes():
         "fin": (P + [(0.5, 0.5, -1.0)], T + [(0, 1, 8)]),
         "terrain": grid(8, lambda i, j: 0.3 * math.sin(i) * math.cos(j)),
         "holed": grid(4, lambda i, j: 0.0, skip={(1, 1), (2, 1), (1, 2), (2, 2)}),
+        "sliver": ([(0.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0175), (1.0, 0.0, 0.0175)],
+                   [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)]),
     }
 
 

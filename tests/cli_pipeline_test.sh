@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # `meshprep pipeline` on the real binary and the bundled data: every output file, tet meshes read
 # back by meshio and Gmsh, the report read by meshio, replay from pipeline.json (byte-identical),
-# re-runs into the same folder, and the error contract (exit 1 / 2, one line, nothing written).
+# re-runs into the same folder, the verdict (tets that miss a threshold: exit 1, each failed
+# threshold named, the outputs written), --fail-on, and the error contract (exit 1 / 2, one line,
+# nothing written).
 # Usage: cli_pipeline_test.sh MESHPREP_BINARY SOURCE_DIR
 set -uo pipefail
 bin=$1
@@ -27,9 +29,23 @@ PY
   "$py" "$here/fem_readback.py" readback $(cat counts.txt) > readback.txt 2>&1 && ok || { bad "read back $*"; cat readback.txt; }
 }
 
+# TetGen alone leaves slivers in every bundled example (issue 29: fandisk at 30 % 2.3 degrees, the
+# terrain 3.4): their tets are written and not FEM-ready, exit 1. A stage that removes the slivers
+# makes these runs FEM-ready: then this is 0.
+not_ready=1
+
 # ---- a closed CAD part (bundled fandisk), simplified to 30 % ----------------------------------
 "$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --json summary.json > stdout.txt 2> err.txt
-expect_exit "fandisk" 0 $?
+expect_exit "fandisk" $not_ready $?
+if [ $not_ready = 1 ]; then
+  grep -qE "^meshprep: .*fandisk.off: not FEM-ready: smallest dihedral angle [0-9.]+ deg < 10 deg \(min_dihedral_deg\)$" err.txt &&
+    ok || bad "fandisk: the failed threshold is not named with its figure"
+  [ "$(grep -c "^meshprep: failed:" err.txt)" = 1 ] &&
+    grep -q "^meshprep: failed: .*fandisk.off: not FEM-ready: the tets fail min_dihedral_deg.*; the outputs are written in fandisk (see fandisk/report.html)$" err.txt &&
+    ok || bad "fandisk: the failure line"
+  grep -q 'class="verdict fail">.* not FEM-ready: smallest dihedral angle' fandisk/report.html && ok ||
+    bad "fandisk: the report's headline does not say 'not FEM-ready'"
+fi
 for f in surface.ply tets.msh report.html report.json report.vtu pipeline.json; do
   [ -s fandisk/$f ] && ok || bad "fandisk/$f missing"
 done
@@ -39,7 +55,14 @@ cmp -s summary.json fandisk/report.json && ok || bad "--json FILE is report.json
 python3 - <<'PY' && ok || bad "fandisk report.json"
 import json
 j = json.load(open("fandisk/report.json"))
-assert j["fem_ready"] and j["problems"] == [], j["problems"]
+checks = {c["check"]: c for c in j["thresholds"]}
+assert list(checks) == ["min_dihedral_deg", "max_dihedral_deg", "max_inverted_tets"], checks
+q = j["tets"]["tet_quality"]
+assert checks["min_dihedral_deg"]["value"] == q["min_dihedral_deg"]["min"] and checks["min_dihedral_deg"]["threshold"] == 10
+assert checks["max_dihedral_deg"]["value"] == q["max_dihedral_deg"]["max"] and checks["max_dihedral_deg"]["threshold"] == 165
+assert j["fem_ready"] == all(c["ok"] for c in checks.values()), j["fem_ready"]
+assert len(j["problems"]) == sum(not c["ok"] for c in checks.values()), j["problems"]
+assert len(q["worst_tets"]) == 10 and len(q["worst_tets"][0]["centre"]) == 3
 assert [s["name"] for s in j["stages"]] == ["check", "simplify", "smooth", "enhance", "quality", "tetrahedralize"]
 simplify = j["stages"][1]
 assert abs(simplify["faces_after"] - 0.3 * 12946) <= 0.01 * 0.3 * 12946, simplify
@@ -61,13 +84,13 @@ grep -q "property double surface_variation" fandisk/surface.ply && ok || bad "si
 
 # Replay: pipeline.json as the configuration gives the same surface, byte for byte.
 "$bin" pipeline "$src/examples/data/fandisk.off" -o replay --config fandisk/pipeline.json --quiet > stdout.txt 2> err.txt
-expect_exit "replay" 0 $?
+expect_exit "replay" $not_ready $?
 [ ! -s stdout.txt ] && ok || bad "--quiet printed"
 cmp -s fandisk/surface.ply replay/surface.ply && ok || bad "the replay's surface differs"
 cmp -s fandisk/tets.msh replay/tets.msh && ok || bad "the replay's tets differ"
 # One thread or all: the same bytes.
 "$bin" pipeline "$src/examples/data/fandisk.off" -o one_thread --ratio 0.3 --threads 1 --quiet 2> err.txt
-expect_exit "--threads 1" 0 $?
+expect_exit "--threads 1" $not_ready $?
 for f in surface.ply tets.msh report.vtu; do
   cmp -s fandisk/$f one_thread/$f && ok || bad "--threads 1 changes $f"
 done
@@ -80,7 +103,7 @@ assert a == b and a['simplify']['ratio'] == 0.3" && ok || bad "print-config = pi
 
 # Re-running with another format replaces the tets.
 "$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --format inp --quiet 2> err.txt
-expect_exit "fandisk inp" 0 $?
+expect_exit "fandisk inp" $not_ready $?
 [ -s fandisk/tets.inp ] && [ ! -e fandisk/tets.msh ] && ok || bad "tets.msh not replaced by tets.inp: $(ls fandisk)"
 readback fandisk tets.inp
 
@@ -88,17 +111,65 @@ readback fandisk tets.inp
 echo '{"reconstruct": {"resolution": [80, 80]}}' > coarse.json
 "$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o terrain --config coarse.json --format vtu --json - \
   > terrain.json 2> err.txt
-expect_exit "terrain" 0 $?
+expect_exit "terrain" $not_ready $?
 python3 - <<'PY' && ok || bad "terrain summary on stdout"
 import json
 j = json.load(open("terrain.json"))
-assert j["input_kind"] == "points" and j["input_points"] == 10000 and j["fem_ready"]
+assert j["input_kind"] == "points" and j["input_points"] == 10000
+assert j["fem_ready"] == all(c["ok"] for c in j["thresholds"]), j["thresholds"]
 r = j["stages"][0]
 assert r["name"] == "reconstruct" and r["details"]["grid"] == [80, 80]
 assert j["quality"]["boundary_loops"] == 1
 PY
 grep -q "^reconstruct " err.txt && ok || bad "with --json - the stage lines go to stderr"
 readback terrain tets.vtu
+
+# ---- the verdict's thresholds and --fail-on ------------------------------------------------------
+# One 2-degree tet (enhancement off, no refinement, its triangles kept): not FEM-ready, exit 1, one
+# line per failed threshold, every output written and saying so.
+python3 "$here/cli_meshes.py" sliver
+echo '{"enhance": {"enabled": false}, "tetrahedralize": {"radius_edge": 0, "keep_surface": true}}' > one_tet.json
+"$bin" pipeline sliver.off -o sliver --config one_tet.json --quiet > stdout.txt 2> err.txt
+expect_exit "sliver" 1 $?
+has_sliver_verdict && ok || bad "sliver: the failed thresholds"
+grep -qx "meshprep: failed: sliver.off: not FEM-ready: the tets fail min_dihedral_deg, max_dihedral_deg (above); the outputs are written in sliver (see sliver/report.html)" err.txt &&
+  ok || bad "sliver: the failure line"
+[ "$(ls sliver | tr '\n' ' ')" = "pipeline.json report.html report.json report.vtu surface.ply tets.msh " ] && ok ||
+  bad "sliver: outputs $(ls sliver)"
+grep -q '<p class="verdict fail">✘ not FEM-ready: smallest dihedral angle 2.005 deg' sliver/report.html &&
+  ! grep -q 'verdict pass' sliver/report.html && ok || bad "sliver: the report's headline"
+python3 - <<'PY' && ok || bad "sliver report.json"
+import json
+j = json.load(open("sliver/report.json"))
+assert j["fem_ready"] is False and len(j["problems"]) == 2, j["problems"]
+assert [c["ok"] for c in j["thresholds"]] == [False, False, True], j["thresholds"]
+assert j["tets"]["tet_quality"]["tetrahedra"] == 1
+PY
+# The flags change the thresholds (and pipeline.json records them for a replay).
+"$bin" pipeline sliver.off -o sliver_ok --config one_tet.json --quiet --min-dihedral-threshold 2 \
+  --max-dihedral-threshold 178 2> err.txt
+expect_exit "sliver within relaxed thresholds" 0 $?
+python3 -c "
+import json; v = json.load(open('sliver_ok/pipeline.json'))['verdict']
+assert v == {'min_dihedral_deg': 2, 'max_dihedral_deg': 178, 'max_inverted_tets': 0}, v" && ok || bad "pipeline.json verdict"
+"$bin" pipeline sliver.off -o sliver_replay --config sliver_ok/pipeline.json --quiet 2> err.txt
+expect_exit "sliver replayed with its thresholds" 0 $?
+"$bin" pipeline sliver.off -o x --min-dihedral-threshold -1 > /dev/null 2> err.txt; expect_exit "negative threshold" 2 $?
+# --fail-on: the conditions of quality --fail-on, on report.json; those that hold are named, the
+# outputs written. A malformed gate is bad usage, refused before any work.
+"$bin" pipeline sliver.off -o gate --config sliver_ok/pipeline.json --quiet \
+  --fail-on "tets.tet_quality.scaled_jacobian.min<0.1,quality.faces>100" 2> err.txt
+expect_exit "--fail-on holds" 1 $?
+grep -qE "^meshprep: sliver.off: --fail-on: tets.tet_quality.scaled_jacobian.min<0.1 holds \(is 0.03[0-9]+\)$" err.txt &&
+  ! grep -q "quality.faces>100" err.txt && ok || bad "--fail-on: the condition that holds"
+grep -qx "meshprep: failed: sliver.off: 1 --fail-on condition(s) hold (above); the outputs are written in gate (see gate/report.html)" err.txt &&
+  [ -s gate/tets.msh ] && ok || bad "--fail-on: the failure line and the outputs"
+"$bin" pipeline sliver.off -o gate2 --config sliver_ok/pipeline.json --quiet --fail-on "fem_ready=false" 2> err.txt
+expect_exit "--fail-on that does not hold" 0 $?
+"$bin" pipeline sliver.off -o gate3 --fail-on "fem_ready" > /dev/null 2> err.txt; expect_exit "malformed --fail-on" 2 $?
+"$bin" pipeline sliver.off -o gate3 --fail-on "quality.facez>1" > /dev/null 2> err.txt; expect_exit "--fail-on typo" 2 $?
+grep -q "unknown key 'quality.facez'" err.txt && ok || bad "--fail-on typo: the message"
+[ ! -e gate3 ] && ok || bad "a malformed --fail-on made a folder"
 
 # ---- errors: exit 2, one line, nothing written ------------------------------------------------
 "$bin" pipeline missing.off -o out_missing > /dev/null 2> err.txt; expect_exit "missing input" 2 $?

@@ -23,13 +23,14 @@ PY
 }
 
 # run NAME OUTPUT ARGS...: the command with 1 and 2 threads, each in its own folder (t1/, t2/)
-# so that the paths in the JSON are the same; OUTPUT and the JSON compared.
+# so that the paths in the JSON are the same; OUTPUT and the JSON compared. The exit code is
+# $want (0 unless set for the call).
 run() {
   local name=$1 output=$2
   shift 2
   for t in 1 2; do
     mkdir -p t$t && (cd t$t && "$bin" "$@" --threads "$t" --json "$name.json" > /dev/null 2> ../err.txt)
-    expect_exit "$name --threads $t" 0 $?
+    expect_exit "$name --threads $t" "${want:-0}" $?
   done
   cmp -s "t1/$output" "t2/$output" && ok || bad "$name: $output differs between 1 and 2 threads"
   [ "$(untimed "t1/$name.json")" = "$(untimed "t2/$name.json")" ] && ok ||
@@ -40,7 +41,8 @@ run reconstruct terrain.ply reconstruct "$data/jacksboro_10k.xyz" -o terrain.ply
 run simplify simplified.off simplify "$data/fandisk.off" -o simplified.off --ratio 0.3
 run smooth smoothed.off smooth "$data/fandisk.off" -o smoothed.off --iterations 2
 run enhance enhanced.off enhance "$data/femur.off" -o enhanced.off --iterations 3
-run tetrahedralize tets.msh tetrahedralize "$data/fandisk.off" -o tets.msh
+# TetGen alone leaves a 4.7-degree sliver in fandisk: written, not FEM-ready (exit 1).
+want=1 run tetrahedralize tets.msh tetrahedralize "$data/fandisk.off" -o tets.msh
 # quality writes no mesh: its per-face VTK file is the compared output.
 run quality faces.vtk quality "$data/femur.off" --reference "$data/femur.off" --vtk faces.vtk
 

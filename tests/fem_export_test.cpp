@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -99,6 +100,50 @@ TEST_F(FemExportTest, ThirdPartyReadersReadEveryFormat) {
   if (!succeeds("command -v gmsh >/dev/null 2>&1")) GTEST_SKIP() << "gmsh is not on PATH (apt-get install gmsh)";
   write_all_formats(test::cube_tets(2));
   EXPECT_TRUE(succeeds(readback_command(python, kPoints, kTets)));
+}
+
+// The values of a VTK cell array named `name` (.vtu DataArray or legacy SCALARS), `count` of them.
+std::vector<double> vtk_cell_array(const std::string& content, const std::string& name, std::size_t count) {
+  const std::string xml = "Name=\"" + name + "\" format=\"ascii\">\n", legacy = "SCALARS " + name + " double 1\nLOOKUP_TABLE default\n";
+  std::size_t at = content.find(xml);
+  at = at != std::string::npos ? at + xml.size() : content.find(legacy);
+  if (at == std::string::npos) return {};
+  if (content.compare(at, legacy.size(), legacy) == 0) at += legacy.size();
+  std::istringstream in(content.substr(at));
+  std::vector<double> values(count);
+  for (double& v : values) in >> v;  // operator>>, as VTK's ASCII readers parse
+  if (!in) return {};
+  return values;
+}
+
+TEST_F(FemExportTest, VtkFilesCarryEachTetsQualityInAFormVtkParses) {
+  // cube_tets(1): six Kuhn tets (dihedral 45 to 90, radius-edge sqrt(3)/2, scaled Jacobian 1/sqrt 3),
+  // then a flat tet, whose radius-edge ratio is infinite: written as 1e30, which operator>> reads.
+  TetMesh mesh = test::cube_tets(1);
+  mesh.tets.push_back({0, 1, 3, 2});  // four corners of the face z = 0
+  mesh.tet_regions.push_back(1);
+  for (const char* name : {"cube.vtu", "cube.vtk"}) {
+    write_tet_mesh(mesh, path(name));
+    const std::string content = read_text(path(name));
+    EXPECT_EQ(content.find("inf"), std::string::npos) << name;
+    const std::vector<double> min_dihedral = vtk_cell_array(content, "min_dihedral_deg", 7);
+    const std::vector<double> max_dihedral = vtk_cell_array(content, "max_dihedral_deg", 7);
+    const std::vector<double> radius_edge = vtk_cell_array(content, "radius_edge_ratio", 7);
+    const std::vector<double> jacobian = vtk_cell_array(content, "scaled_jacobian", 7);
+    ASSERT_EQ(min_dihedral.size(), 7u) << name;
+    ASSERT_EQ(max_dihedral.size(), 7u) << name;
+    ASSERT_EQ(radius_edge.size(), 7u) << name;
+    ASSERT_EQ(jacobian.size(), 7u) << name;
+    for (std::size_t t = 0; t < 6; ++t) {
+      EXPECT_NEAR(min_dihedral[t], 45.0, 1e-10) << name;  // degrees: atan2 round-off
+      EXPECT_NEAR(max_dihedral[t], 90.0, 1e-10) << name;
+      EXPECT_NEAR(radius_edge[t], std::sqrt(3.0) / 2.0, 1e-12) << name;
+      EXPECT_NEAR(jacobian[t], 1.0 / std::sqrt(3.0), 1e-12) << name;
+    }
+    EXPECT_EQ(radius_edge[6], 1e30) << name;
+    EXPECT_EQ(jacobian[6], 0.0) << name;
+    EXPECT_NEAR(max_dihedral[6], 180.0, 1e-10) << name;
+  }
 }
 
 TEST_F(FemExportTest, WritesEveryFileAndNothingElse) {

@@ -5,12 +5,16 @@ Usage: fem_readback.py DIR POINTS TETS VOLUME
 
 Each file is read with meshio (.msh 4.1/2.2 ASCII and binary, .vtu, .vtk, .mesh, .inp, .node with
 its .ele sibling) and must have POINTS points, TETS cells of type "tetra", every tet positively
-oriented and a total signed volume equal to VOLUME (relative tolerance 1e-9). .msh files are also
-checked by Gmsh itself (`gmsh FILE -check`): exit code 0, no warning or error, and the node and
+oriented and a total signed volume equal to VOLUME (relative tolerance 1e-9). .vtu and .vtk files
+must carry the cell data "region" and the per-tet quality min_dihedral_deg, max_dihedral_deg,
+radius_edge_ratio and scaled_jacobian, equal to the values computed here independently (dihedral
+angles from the two faces' directions normal to each edge, the circumcentre from its linear system,
+Verdict's scaled Jacobian from each corner's edges). .msh files are also checked by Gmsh itself (`gmsh FILE -check`): exit code 0, no warning or error, and the node and
 element counts it prints must match. .ele and .face files are covered by their .node file.
 
 Prints one line per file; exits 1 if any file fails (with the reason), 2 on bad usage.
 """
+import itertools
 import pathlib
 import re
 import subprocess
@@ -31,6 +35,10 @@ MESHIO_FORMATS = {
 }
 SIBLINGS = {".ele", ".face"}  # read through the .node file
 RELATIVE_TOLERANCE = 1e-9
+QUALITY_ARRAYS = ("min_dihedral_deg", "max_dihedral_deg", "radius_edge_ratio", "scaled_jacobian")
+# Differences of the two computations' round-off (their inputs are the same doubles): angles to
+# 1e-9 degree, ratios to 1e-9 relative (the circumcentre's 3x3 solve is the least accurate part).
+QUALITY_TOLERANCE = 1e-9
 
 
 class Failure(Exception):
@@ -40,6 +48,51 @@ class Failure(Exception):
 def signed_volumes(points, tets):
     p0, p1, p2, p3 = (points[tets[:, k]] for k in range(4))
     return np.einsum("ij,ij->i", p1 - p0, np.cross(p2 - p0, p3 - p0)) / 6.0
+
+
+def norms(vectors):
+    return np.linalg.norm(vectors, axis=1)
+
+
+def expected_quality(points, tets):
+    """Per-tet quality, computed another way than meshprep's (which uses the faces' normals)."""
+    p = [points[tets[:, k]] for k in range(4)]
+    dihedral = []
+    for i, j in itertools.combinations(range(4), 2):
+        k, l = (m for m in range(4) if m not in (i, j))
+        edge = (p[j] - p[i]) / norms(p[j] - p[i])[:, None]
+        u, v = p[k] - p[i], p[l] - p[i]
+        u = u - np.einsum("ij,ij->i", u, edge)[:, None] * edge  # towards k, normal to the edge
+        v = v - np.einsum("ij,ij->i", v, edge)[:, None] * edge
+        dihedral.append(np.degrees(np.arctan2(norms(np.cross(u, v)), np.einsum("ij,ij->i", u, v))))
+    dihedral = np.array(dihedral)
+    # Circumcentre c: 2 (p_m - p_0) . c = |p_m|^2 - |p_0|^2, m = 1, 2, 3 (relative to p_0).
+    rows = np.stack([p[m] - p[0] for m in (1, 2, 3)], axis=1)
+    centre = np.linalg.solve(2 * rows, np.einsum("imj,imj->im", rows, rows)[:, :, None])[:, :, 0]
+    lengths = {(a, b): norms(p[b] - p[a]) for a, b in itertools.combinations(range(4), 2)}
+    shortest = np.min(np.array(list(lengths.values())), axis=0)
+    jacobian = np.einsum("ij,ij->i", p[1] - p[0], np.cross(p[2] - p[0], p[3] - p[0]))
+    corners = [np.prod([lengths[tuple(sorted((c, m)))] for m in range(4) if m != c], axis=0) for c in range(4)]
+    scaled = np.min([np.sqrt(2.0) * jacobian / product for product in corners], axis=0)  # positive tets
+    return {"min_dihedral_deg": dihedral.min(axis=0), "max_dihedral_deg": dihedral.max(axis=0),
+            "radius_edge_ratio": norms(centre) / shortest, "scaled_jacobian": scaled}
+
+
+def check_cell_quality(mesh, points, tets):
+    """The VTK files' cell data: the region and the four quality arrays, one value per tet."""
+    for name in ("region",) + QUALITY_ARRAYS:
+        if name not in mesh.cell_data:
+            raise Failure(f"no cell data '{name}' (has {sorted(mesh.cell_data)})")
+        if sum(len(block) for block in mesh.cell_data[name]) != len(tets):
+            raise Failure(f"cell data '{name}' has {sum(len(b) for b in mesh.cell_data[name])} values for {len(tets)} tets")
+    expected = expected_quality(points, tets)
+    for name in QUALITY_ARRAYS:
+        # meshio gives legacy VTK scalars as (n, 1) columns, XML arrays as (n,).
+        written = np.concatenate([np.asarray(block, dtype=float).reshape(-1) for block in mesh.cell_data[name]])
+        scale = 1.0 if name.endswith("_deg") or name == "scaled_jacobian" else np.abs(expected[name])
+        worst = np.max(np.abs(written - expected[name]) / np.maximum(scale, 1e-300))
+        if not worst <= QUALITY_TOLERANCE:
+            raise Failure(f"cell data '{name}' differs from the tets' own by {worst:.3g}")
 
 
 def check_with_meshio(path, file_format, num_points, num_tets, volume):
@@ -62,7 +115,11 @@ def check_with_meshio(path, file_format, num_points, num_tets, volume):
     if abs(total - volume) > RELATIVE_TOLERANCE * abs(volume):
         raise Failure(f"total volume {total!r}, expected {volume!r}")
     num_cells = sum(len(block.data) for block in mesh.cells)
-    return num_cells, f"meshio ok: {len(mesh.points)} points, {len(tets)} tets, volume {total:.12g}"
+    summary = f"meshio ok: {len(mesh.points)} points, {len(tets)} tets, volume {total:.12g}"
+    if file_format in ("vtu", "vtk"):
+        check_cell_quality(mesh, np.asarray(mesh.points, dtype=float), tets)
+        summary += ", per-tet quality as cell data"
+    return num_cells, summary
 
 
 def check_with_gmsh(path, num_points, num_cells):

@@ -29,6 +29,9 @@ TEST(PipelineConfig, DefaultsAreTheStagesOwnWhereTheHeaderSaysSo) {
   EXPECT_EQ(c.simplify.params.min_angle_deg, SimplifyParams().min_angle_deg);
   EXPECT_EQ(c.enhance.params.tail_k, EnhanceParams().tail_k);
   EXPECT_EQ(c.tetrahedralize.params.radius_edge, TetParams().radius_edge);
+  EXPECT_EQ(c.verdict.min_dihedral_deg, TetThresholds().min_dihedral_deg);
+  EXPECT_EQ(c.verdict.max_dihedral_deg, TetThresholds().max_dihedral_deg);
+  EXPECT_EQ(c.verdict.max_inverted_tets, TetThresholds().max_inverted_tets);
   EXPECT_EQ(c.reconstruct.params.fit.neighbors, PartitionOfUnityParams().neighbors);
   // The pipeline's own choices (pipeline_config.h says why).
   EXPECT_TRUE(c.reconstruct.params.fill_holes);
@@ -45,8 +48,12 @@ TEST(PipelineConfig, TheEffectiveConfigurationReadsBackToItself) {
   apply_config(Json::parse(R"({"simplify": {"ratio": 0.25, "cost": "distance"},
                                "smooth": {"enabled": true, "method": "taubin", "iterations": 3},
                                "reconstruct": {"resolution": [120, 80], "variation_threshold": 0.3},
-                               "tetrahedralize": {"format": "inp", "msh_version": "2.2", "extrude_base": 5}})"),
+                               "tetrahedralize": {"format": "inp", "msh_version": "2.2", "extrude_base": 5},
+                               "verdict": {"min_dihedral_deg": 15, "max_dihedral_deg": 160, "max_inverted_tets": 2}})"),
                "c.json", changed);
+  EXPECT_EQ(changed.verdict.min_dihedral_deg, 15.0);
+  EXPECT_EQ(changed.verdict.max_dihedral_deg, 160.0);
+  EXPECT_EQ(changed.verdict.max_inverted_tets, 2u);
   EXPECT_EQ(*changed.simplify.ratio, 0.25);
   EXPECT_EQ(changed.simplify.params.cost, CollapseCost::Distance);
   EXPECT_EQ(changed.smooth.params.method, SmoothMethod::Taubin);
@@ -88,7 +95,7 @@ TEST(PipelineConfig, DocsListEveryKey) {
 TEST(PipelineConfig, UnknownSectionsAndKeysNameTheValidOnes) {
   EXPECT_EQ(error_of(Json::parse(R"({"simplfy": {}})")),
             "c.json: unknown section 'simplfy'; valid sections: reconstruct, simplify, smooth, enhance, quality, "
-            "tetrahedralize");
+            "tetrahedralize, verdict");
   const std::string key = error_of(Json::parse(R"({"simplify": {"ratoi": 0.5}})"));
   EXPECT_EQ(key.rfind("c.json: unknown key 'simplify.ratoi'; valid keys of simplify: enabled, ratio, target_faces", 0), 0u)
       << key;
@@ -106,6 +113,10 @@ TEST(PipelineConfig, ValuesOfTheWrongTypeOrRangeAreRefusedWithTheKey) {
   EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"format": "stl"}})")),
             "c.json: tetrahedralize.format: expected one of msh, vtu, mesh, inp, node, not \"stl\"");
   EXPECT_NE(error_of(Json::parse(R"({"enhance": {"max_deviation": 0}})")).find("number in (0, 1]"), std::string::npos);
+  EXPECT_EQ(error_of(Json::parse(R"({"verdict": {"min_dihedral_deg": 200}})")),
+            "c.json: verdict.min_dihedral_deg: expected a number in [0, 180], not 200");
+  EXPECT_EQ(error_of(Json::parse(R"({"verdict": {"max_inverted_tets": -1}})")),
+            "c.json: verdict.max_inverted_tets: expected an integer in [0, 1000000000], not -1");
   EXPECT_NE(error_of(Json::parse(R"({"reconstruct": {"resolution": [1, 5]}})")).find("[NX, NY]"), std::string::npos);
   EXPECT_NE(error_of(Json::parse(R"({"reconstruct": {"variation_threshold": "q9"}})")).find("percentile"),
             std::string::npos);

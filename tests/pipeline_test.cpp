@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +49,39 @@ class Pipeline : public test::ScratchDirTest {
   }
 };
 
+// The verdict is consistent with the tets' figures and the default thresholds (fem_verdict.h).
+void expect_verdict_follows_the_figures(const PipelineResult& r) {
+  ASSERT_TRUE(r.tet_quality);
+  const TetQualityReport& q = *r.tet_quality;
+  const TetThresholds t;
+  EXPECT_EQ(r.fem.ready, q.min_dihedral_deg.min >= t.min_dihedral_deg && q.max_dihedral_deg.max <= t.max_dihedral_deg &&
+                             q.inverted_tets <= t.max_inverted_tets)
+      << (r.fem.problems.empty() ? "" : r.fem.problems.front());
+  ASSERT_EQ(r.fem.checks.size(), 3u);
+  EXPECT_EQ(r.fem.checks[0].value, q.min_dihedral_deg.min);
+  EXPECT_EQ(r.fem.checks[1].value, q.max_dihedral_deg.max);
+  EXPECT_EQ(r.fem.checks[2].value, static_cast<double>(q.inverted_tets));
+  EXPECT_EQ(r.fem.problems.size(), judge_tets(q, t).failed().size());
+}
+
+// A closed surface of four triangles: the 2-degree sliver of tet_quality_test's SliverByHand,
+// outward oriented. Without refinement (radius_edge 0) and with its triangles kept (-Y), TetGen
+// makes exactly that tet.
+TriangleSoup sliver_surface() {
+  const double h = 0.0175;
+  TriangleSoup soup;
+  soup.points = {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, h), Vec3(1, 0, h)};
+  soup.triangles = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  return soup;
+}
+
+std::string read_text(const std::string& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 std::vector<std::string> stage_names(const PipelineResult& r) {
   std::vector<std::string> names;
   for (const StageRecord& s : r.stages) names.push_back(s.name);
@@ -63,7 +97,8 @@ TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
   EXPECT_TRUE(r.stages[1].ran);
   EXPECT_FALSE(r.stages[2].ran);  // smoothing is off by default
   EXPECT_NEAR(static_cast<double>(r.final_quality.faces), 640.0, 640 * 0.02);  // the target +-1 %, enhance +-1 %
-  EXPECT_TRUE(r.fem.ready) << (r.fem.problems.empty() ? "" : r.fem.problems.front());
+  // TetGen alone leaves an 8.4-degree sliver here (issue 29): the verdict says so.
+  expect_verdict_follows_the_figures(r);
   ASSERT_TRUE(r.tet_quality && r.final_quality.volume);
   // TetGen fills the closed polyhedron and, by default on a closed surface (keep_surface "auto"),
   // keeps its triangles (-Y): the tets' boundary is the final surface, face for face, and their
@@ -91,8 +126,8 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
   EXPECT_NEAR(static_cast<double>(r.stages[1].faces_after), 0.07 * static_cast<double>(r.stages[1].faces_before),
               0.02 * static_cast<double>(r.stages[1].faces_before));
   EXPECT_EQ(r.final_quality.boundary_loops, 1u);
-  ASSERT_TRUE(r.fem.ready) << r.fem.problems.front();
-  ASSERT_TRUE(r.extrusion_depth);
+  ASSERT_TRUE(r.tets && r.extrusion_depth);
+  expect_verdict_follows_the_figures(r);
   // The block's volume: over each top triangle, its projected area times its mean height above
   // the base (exact for a piecewise-linear top).
   double lowest = INFINITY;
@@ -176,7 +211,11 @@ TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
   EXPECT_EQ(to_json(replayed), to_json(config));
   std::ifstream summary_file(out + "/report.json");
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
-  EXPECT_EQ(summary["fem_ready"], true);
+  EXPECT_EQ(summary["fem_ready"], r.fem.ready);
+  ASSERT_EQ(summary["thresholds"].size(), 3u);
+  EXPECT_EQ(summary["thresholds"][0]["check"], "min_dihedral_deg");
+  EXPECT_EQ(summary["thresholds"][0]["value"], r.tet_quality->min_dihedral_deg.min);
+  EXPECT_EQ(summary["tets"]["tet_quality"]["worst_tets"].size(), kDefaultWorstTets);
   EXPECT_EQ(summary["stages"].size(), 6u);
   EXPECT_EQ(summary["quality"]["faces"], r.surface.triangles.size());
 
@@ -189,6 +228,49 @@ TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
   no_tets.tets.reset();
   write_pipeline_outputs(no_tets, config, out, run);
   EXPECT_FALSE(fs::exists(out + "/tets.vtu"));
+}
+
+TEST_F(Pipeline, OneSliverIsNotFemReadyAndTheFilesSaySo) {
+  PipelineConfig config = small_config();
+  config.enhance.enabled = false;  // the surface reaches TetGen as it is
+  config.tetrahedralize.params.radius_edge = 0;
+  config.tetrahedralize.keep_surface = true;
+  const PipelineResult r = run_pipeline(mesh_file(sliver_surface(), "sliver.off"), config);
+  ASSERT_TRUE(r.tets && r.tet_quality);
+  ASSERT_EQ(r.tet_quality->tetrahedra, 1u);
+  EXPECT_FALSE(r.fem.ready);
+  // Both angle thresholds fail, with their figures; no tet is inverted.
+  EXPECT_EQ(r.fem.problems, (std::vector<std::string>{"smallest dihedral angle 2.005 deg < 10 deg (min_dihedral_deg)",
+                                                       "largest dihedral angle 177.2 deg > 165 deg (max_dihedral_deg)"}));
+  ASSERT_EQ(r.fem.checks.size(), 3u);
+  EXPECT_NEAR(r.fem.checks[0].value, 2.0048, 1e-4);
+  EXPECT_TRUE(r.fem.checks[2].ok);
+
+  // The files are written, and every one that judges says "not FEM-ready".
+  const std::string out = path("out");
+  prepare_output_dir(out);
+  const std::vector<std::string> files = write_pipeline_outputs(r, config, out, {{"input", "sliver.off"}});
+  EXPECT_NE(std::find(files.begin(), files.end(), "tets.msh"), files.end());
+  EXPECT_TRUE(fs::exists(out + "/tets.msh"));
+  const nlohmann::json summary = nlohmann::json::parse(read_text(out + "/report.json"));
+  EXPECT_EQ(summary["fem_ready"], false);
+  EXPECT_EQ(summary["problems"].size(), 2u);
+  EXPECT_EQ(summary["thresholds"][0], (nlohmann::json{{"check", "min_dihedral_deg"}, {"threshold", 10.0},
+                                                      {"value", r.fem.checks[0].value}, {"ok", false}}));
+  EXPECT_EQ(summary["tets"]["tet_quality"]["worst_tets"].size(), 1u);
+  const std::string html = read_text(out + "/report.html");
+  EXPECT_NE(html.find("<p class=\"verdict fail\">\u2718 not FEM-ready: smallest dihedral angle 2.005 deg"), std::string::npos);
+  EXPECT_EQ(html.find("verdict pass"), std::string::npos);
+  EXPECT_NE(html.find("tets (log scale)"), std::string::npos);
+
+  // Thresholds the sliver meets make it FEM-ready, and the headline says so in green.
+  config.verdict.min_dihedral_deg = 2;
+  config.verdict.max_dihedral_deg = 178;
+  const PipelineResult relaxed = run_pipeline(mesh_file(sliver_surface(), "sliver.off"), config);
+  EXPECT_TRUE(relaxed.fem.ready);
+  EXPECT_TRUE(relaxed.fem.problems.empty());
+  EXPECT_NE(pipeline_report_html(relaxed, config).find("<p class=\"verdict pass\">\u2714 FEM-ready: 1 tets"),
+            std::string::npos);
 }
 
 TEST_F(Pipeline, AnOutputFolderThatCannotBeMadeIsAnIoError) {

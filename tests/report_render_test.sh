@@ -18,7 +18,10 @@ passed=0 failed=0
 ok() { passed=$((passed + 1)); }
 bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
 
-"$bin" pipeline "$src/examples/data/femur.off" -o femur --quiet 2> err.txt || { bad "pipeline failed"; cat err.txt; }
+# TetGen alone leaves a 5.5-degree sliver in the femur: the report is written, not FEM-ready (exit 1);
+# its red headline is rendered too.
+"$bin" pipeline "$src/examples/data/femur.off" -o femur --quiet 2> err.txt
+[ $? -le 1 ] && [ -s femur/report.html ] || { bad "pipeline failed"; cat err.txt; }
 "$bin" quality "$src/examples/data/femur.off" --html quality.html > /dev/null 2> err.txt || { bad "quality failed"; cat err.txt; }
 
 # Chromium as the machine allows it (root, no GPU, no network): logging on stderr shows the page's

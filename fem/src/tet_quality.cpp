@@ -1,3 +1,6 @@
+// Tet quality: dihedral angles, radius-edge ratio, and the Verdict library's scaled Jacobian and
+// aspect ratio (C. J. Stimpson, C. D. Ernst, P. Knupp, P. P. Pebay, D. Thompson, "The Verdict
+// Geometric Quality Library", SAND2007-1751, 2007; sandialabs/verdict V_TetMetric.cpp).
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/quality/json_values.h"
 
@@ -10,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -22,7 +26,8 @@ using Json = nlohmann::ordered_json;
 constexpr double kDegreesPerRadian = 180.0 / M_PI;
 
 // Outward normals (unnormalised) of the faces opposite p0..p3 of a positively oriented tet. For an
-// inverted tet all four point inward, which leaves the angles between them unchanged.
+// inverted tet all four point inward, which leaves the angles between them unchanged. Each has
+// twice its face's area as its length.
 std::array<Vec3, 4> face_normals(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
   return {(p2 - p1).cross(p3 - p1), (p3 - p0).cross(p2 - p0), (p1 - p0).cross(p3 - p0),
           (p2 - p0).cross(p1 - p0)};
@@ -44,10 +49,9 @@ std::pair<double, double> dihedral_range_deg(const std::array<Vec3, 4>& normals)
   return {lo, hi};
 }
 
-double shortest_edge(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-  const double squared = std::min({(p1 - p0).squaredNorm(), (p2 - p0).squaredNorm(), (p3 - p0).squaredNorm(),
-                                   (p2 - p1).squaredNorm(), (p3 - p1).squaredNorm(), (p3 - p2).squaredNorm()});
-  return std::sqrt(squared);
+// The six edge lengths, in the order 01 02 03 12 13 23.
+std::array<double, 6> edge_lengths(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+  return {(p1 - p0).norm(), (p2 - p0).norm(), (p3 - p0).norm(), (p2 - p1).norm(), (p3 - p1).norm(), (p3 - p2).norm()};
 }
 
 // Circumradius R = |a^2 (b x c) + b^2 (c x a) + c^2 (a x b)| / (12 V), a, b, c the edges from p0
@@ -58,10 +62,29 @@ double circumradius(const Vec3& a, const Vec3& b, const Vec3& c, double volume) 
   return centre.norm() / (12.0 * std::abs(volume));
 }
 
-void check_structure(const TetMesh& mesh) {
-  if (mesh.tet_regions.size() != mesh.tets.size())
-    throw InvalidInput("tet mesh: " + std::to_string(mesh.tet_regions.size()) + " region tags for " +
-                       std::to_string(mesh.tets.size()) + " tets");
+// Verdict's tet_scaled_jacobian: J is the same at every corner, so the smallest corner value of a
+// positive tet is J over the largest product of a corner's three edge lengths. |J| never exceeds a
+// corner's product (Hadamard's inequality); Verdict still takes |J| into the maximum, which keeps
+// the result in [-1, 1] under round-off. Lengths, not squared lengths, keep the products (of
+// degree 3) within the double range for any coordinates the readers accept.
+double scaled_jacobian(const std::array<double, 6>& l, double jacobian) {
+  const double largest = std::max({l[0] * l[1] * l[2], l[0] * l[3] * l[4], l[1] * l[3] * l[5], l[2] * l[4] * l[5],
+                                   std::abs(jacobian)});
+  if (largest == 0) return 0;  // every corner at one point
+  return std::sqrt(2.0) * jacobian / largest;
+}
+
+// Verdict's tet_aspect_ratio: h_max / (2 sqrt(6) r) with the inradius r = 3 |V| / A, A the faces'
+// area, so h_max A / (6 sqrt(6) |V|); 2 sqrt(6) r is the edge of the regular tet of inradius r,
+// hence 1 for it.
+double aspect_ratio(const std::array<double, 6>& l, const std::array<Vec3, 4>& normals, double volume) {
+  if (volume == 0) return std::numeric_limits<double>::infinity();
+  double area = 0;
+  for (const Vec3& n : normals) area += 0.5 * n.norm();
+  return *std::max_element(l.begin(), l.end()) * area / (6.0 * std::sqrt(6.0) * std::abs(volume));
+}
+
+void check_point_indices(const TetMesh& mesh) {
   for (std::size_t t = 0; t < mesh.tets.size(); ++t)
     for (const auto v : mesh.tets[t])
       if (v >= mesh.points.size())
@@ -69,7 +92,56 @@ void check_structure(const TetMesh& mesh) {
                            " of " + std::to_string(mesh.points.size()));
 }
 
+// The `count` tets of smallest dihedral angle, smallest first; ties by index, so that the list
+// does not depend on the sort's implementation.
+std::vector<WorstTet> worst_tets(const TetMesh& mesh, const std::vector<TetShape>& shapes, std::size_t count) {
+  std::vector<std::size_t> order(shapes.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  count = std::min(count, order.size());
+  const auto by_angle = [&shapes](std::size_t a, std::size_t b) {
+    return std::make_pair(shapes[a].min_dihedral_deg, a) < std::make_pair(shapes[b].min_dihedral_deg, b);
+  };
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count), order.end(), by_angle);
+  std::vector<WorstTet> worst(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    WorstTet& w = worst[i];
+    w.index = order[i];
+    w.region = mesh.tet_regions[w.index];
+    for (const auto v : mesh.tets[w.index]) w.centre += mesh.points[v] / 4.0;
+    w.shape = shapes[w.index];
+  }
+  return worst;
+}
+
+Json worst_tet_json(const WorstTet& w) {
+  return {{"index", w.index},
+          {"region", w.region},
+          {"centre", {w.centre.x(), w.centre.y(), w.centre.z()}},
+          {"min_dihedral_deg", w.shape.min_dihedral_deg},
+          {"max_dihedral_deg", w.shape.max_dihedral_deg},
+          {"radius_edge_ratio", json_number(w.shape.radius_edge_ratio)},
+          {"scaled_jacobian", w.shape.scaled_jacobian},
+          {"aspect_ratio", json_number(w.shape.aspect_ratio)}};
+}
+
+}  // namespace
+
+TetShape tet_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+  const Vec3 a = p1 - p0, b = p2 - p0, c = p3 - p0;
+  const double jacobian = a.dot(b.cross(c));
+  const std::array<Vec3, 4> normals = face_normals(p0, p1, p2, p3);
+  const std::array<double, 6> lengths = edge_lengths(p0, p1, p2, p3);
+  TetShape s;
+  s.volume = jacobian / 6.0;
+  std::tie(s.min_dihedral_deg, s.max_dihedral_deg) = dihedral_range_deg(normals);
+  s.radius_edge_ratio = circumradius(a, b, c, s.volume) / *std::min_element(lengths.begin(), lengths.end());
+  s.scaled_jacobian = scaled_jacobian(lengths, jacobian);
+  s.aspect_ratio = aspect_ratio(lengths, normals, s.volume);
+  return s;
+}
+
 std::vector<TetShape> tet_shapes(const TetMesh& mesh) {
+  check_point_indices(mesh);
   std::vector<TetShape> shapes(mesh.tets.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, shapes.size(), 4096), [&](const auto& range) {
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
@@ -80,19 +152,10 @@ std::vector<TetShape> tet_shapes(const TetMesh& mesh) {
   return shapes;
 }
 
-}  // namespace
-
-TetShape tet_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-  const Vec3 a = p1 - p0, b = p2 - p0, c = p3 - p0;
-  TetShape s;
-  s.volume = a.dot(b.cross(c)) / 6.0;
-  std::tie(s.min_dihedral_deg, s.max_dihedral_deg) = dihedral_range_deg(face_normals(p0, p1, p2, p3));
-  s.radius_edge_ratio = circumradius(a, b, c, s.volume) / shortest_edge(p0, p1, p2, p3);
-  return s;
-}
-
-TetQualityReport analyze_tet_quality(const TetMesh& mesh) {
-  check_structure(mesh);
+TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tet_count) {
+  if (mesh.tet_regions.size() != mesh.tets.size())
+    throw InvalidInput("tet mesh: " + std::to_string(mesh.tet_regions.size()) + " region tags for " +
+                       std::to_string(mesh.tets.size()) + " tets");
   const std::vector<TetShape> shapes = tet_shapes(mesh);
   TetQualityReport r;
   r.points = mesh.points.size();
@@ -101,6 +164,8 @@ TetQualityReport analyze_tet_quality(const TetMesh& mesh) {
   max_dihedral.reserve(shapes.size());
   r.min_dihedral_per_tet.reserve(shapes.size());
   r.radius_edge_per_tet.reserve(shapes.size());
+  r.scaled_jacobian_per_tet.reserve(shapes.size());
+  r.aspect_ratio_per_tet.reserve(shapes.size());
   std::size_t below_10 = 0;
   for (std::size_t t = 0; t < shapes.size(); ++t) {
     const TetShape& s = shapes[t];
@@ -111,18 +176,25 @@ TetQualityReport analyze_tet_quality(const TetMesh& mesh) {
     r.min_dihedral_per_tet.push_back(s.min_dihedral_deg);
     max_dihedral.push_back(s.max_dihedral_deg);
     r.radius_edge_per_tet.push_back(s.radius_edge_ratio);
+    r.scaled_jacobian_per_tet.push_back(s.scaled_jacobian);
+    r.aspect_ratio_per_tet.push_back(s.aspect_ratio);
   }
   if (!shapes.empty())
     r.tets_min_dihedral_below_10 = static_cast<double>(below_10) / static_cast<double>(shapes.size());
   r.min_dihedral_deg = summarize(r.min_dihedral_per_tet);
   r.max_dihedral_deg = summarize(std::move(max_dihedral));
   r.radius_edge_ratio = summarize(r.radius_edge_per_tet);
+  r.scaled_jacobian = summarize(r.scaled_jacobian_per_tet);
+  r.aspect_ratio = summarize(r.aspect_ratio_per_tet);
+  r.worst_tets = worst_tets(mesh, shapes, worst_tet_count);
   return r;
 }
 
 Json to_json(const TetQualityReport& report) {
   Json regions = Json::object();
   for (const auto& [region, count] : report.tets_per_region) regions[std::to_string(region)] = count;
+  Json worst = Json::array();
+  for (const WorstTet& w : report.worst_tets) worst.push_back(worst_tet_json(w));
   return {{"points", report.points},
           {"tetrahedra", report.tetrahedra},
           {"volume", json_number(report.volume)},
@@ -131,7 +203,10 @@ Json to_json(const TetQualityReport& report) {
           {"max_dihedral_deg", json_distribution(report.max_dihedral_deg)},
           {"radius_edge_ratio", json_distribution(report.radius_edge_ratio)},
           {"tets_min_dihedral_below_10", report.tets_min_dihedral_below_10},
-          {"tets_per_region", regions}};
+          {"tets_per_region", regions},
+          {"scaled_jacobian", json_distribution(report.scaled_jacobian)},
+          {"aspect_ratio", json_distribution(report.aspect_ratio)},
+          {"worst_tets", worst}};
 }
 
 }  // namespace meshprep

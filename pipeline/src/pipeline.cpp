@@ -55,6 +55,7 @@ class Run {
     enhance_stage();
     quality_stage();
     tetrahedralize_stage();
+    deliver_verdict();  // judges the final tets: a stage that changes them goes before it
     result_.seconds = seconds_since(start);
     return std::move(result_);
   }
@@ -316,8 +317,6 @@ class Run {
     if (result_.tets) {
       result_.tet_quality = analyze_tet_quality(*result_.tets);
       result_.tetgen_switches = tetgen_switches(params, result_.tet_quality->volume);
-      if (result_.tet_quality->inverted_tets > 0)
-        result_.fem.problems.push_back(std::to_string(result_.tet_quality->inverted_tets) + " inverted tets");
       const TetQualityReport& q = *result_.tet_quality;
       record.details = {{"tets", q.tetrahedra},
                         {"points", q.points},
@@ -326,10 +325,21 @@ class Run {
                         {"switches", result_.tetgen_switches}};
       record.note = std::to_string(q.tetrahedra) + " tets, smallest dihedral " +
                     figure(q.min_dihedral_deg.min) + " deg";
+    } else {
+      record.note = "not FEM-ready: " + result_.fem.problems.front();
+    }
+    finish(std::move(record));
+  }
+
+  // The verdict on the final tets (result_.tets, described by result_.tet_quality): FEM-ready when
+  // they exist and meet every threshold of the configuration's verdict section.
+  void deliver_verdict() {
+    if (result_.tet_quality) {
+      const TetVerdict verdict = judge_tets(*result_.tet_quality, config_.verdict);
+      result_.fem.checks = verdict.checks;
+      for (const ThresholdCheck& c : verdict.failed()) result_.fem.problems.push_back(describe(c));
     }
     result_.fem.ready = result_.tets.has_value() && result_.fem.problems.empty();
-    if (!result_.fem.ready) record.note = "not FEM-ready: " + result_.fem.problems.front();
-    finish(std::move(record));
   }
 
   const PipelineConfig& config_;

@@ -289,10 +289,22 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
   return keys;
 }
 
+std::vector<Key> verdict_keys(TetThresholds& t) {
+  std::vector<Key> keys;
+  keys.push_back(number("verdict", "min_dihedral_deg", t.min_dihedral_deg, 0, 180, false,
+                        "FEM-ready only if the tets' smallest dihedral angle is at least this (degrees); 0 = any"));
+  keys.push_back(number("verdict", "max_dihedral_deg", t.max_dihedral_deg, 0, 180, false,
+                        "FEM-ready only if the tets' largest dihedral angle is at most this (degrees); 180 = any"));
+  keys.push_back(count("verdict", "max_inverted_tets", t.max_inverted_tets, 0, 1000000000,
+                       "FEM-ready only if at most this many tets are inverted or flat (volume <= 0)"));
+  return keys;
+}
+
 std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c) {
   return {{"reconstruct", reconstruct_keys(c.reconstruct)}, {"simplify", simplify_keys(c.simplify)},
           {"smooth", smooth_keys(c.smooth)},                {"enhance", enhance_keys(c.enhance)},
-          {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)}};
+          {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
+          {"verdict", verdict_keys(c.verdict)}};
 }
 
 constexpr const char* kRunSection = "run";  // provenance written into pipeline.json, ignored on read

@@ -14,14 +14,13 @@ namespace {
 
 using html::escape;
 
-// FEM codes commonly warn below this smallest dihedral angle; shown as a check, not a gate.
-constexpr double kDihedralWarningDeg = 5;
-
 std::string optional_scientific(const std::optional<double>& v) { return v ? format_scientific(*v, 2) : "-"; }
 
 std::string percent(double fraction) { return std::isfinite(fraction) ? format_fixed(100 * fraction, 2) + " %" : "-"; }
 
 std::string figure(double v) { return std::isfinite(v) ? format_number(v, 4) : "-"; }
+
+std::string degrees(double v) { return std::isfinite(v) ? format_number(v, 4) + "\u00b0" : "-"; }
 
 std::string row(const std::vector<std::string>& cells, const char* tag = "td") {
   std::string out = "<tr>";
@@ -31,33 +30,43 @@ std::string row(const std::vector<std::string>& cells, const char* tag = "td") {
   return out + "</tr>\n";
 }
 
+// The verdict in one line under the title: green when FEM-ready, red with every reason when not.
+std::string headline(const PipelineResult& r, const PipelineConfig& config) {
+  if (!config.tetrahedralize.enabled) return {};
+  if (r.fem.ready)
+    return "<p class=\"verdict pass\">\u2714 FEM-ready: " + std::to_string(r.tet_quality->tetrahedra) +
+           " tets meet every threshold of the verdict.</p>\n";
+  std::string why;
+  for (const std::string& p : r.fem.problems) why += (why.empty() ? "" : "; ") + p;
+  return "<p class=\"verdict fail\">\u2718 not FEM-ready: " + escape(why) + "</p>\n";
+}
+
 std::string readiness_section(const PipelineResult& r, const PipelineConfig& config) {
   std::vector<html::Badge> list;
   if (config.tetrahedralize.enabled) {
     const std::string tets = r.tet_quality ? std::to_string(r.tet_quality->tetrahedra) + " tets" : "none";
-    list.push_back({"FEM-ready: tetrahedralised", tets, r.fem.ready});
+    list.push_back({"tetrahedralised", tets, r.tets.has_value()});
   }
+  for (const ThresholdCheck& c : r.fem.checks) list.push_back({requirement(c), figure(c.value), c.ok});
   for (html::Badge b : html::surface_badges(r.final_quality)) {
     if (b.name == "closed" && r.extrusion_depth)  // a terrain is closed by its block
       b = {"closed: extruded into a block", "base " + format_number(*r.extrusion_depth, 4) + " below", true};
     list.push_back(b);
   }
-  if (r.tet_quality) {
-    list.push_back({"no inverted tets", std::to_string(r.tet_quality->inverted_tets), r.tet_quality->inverted_tets == 0});
-    const double smallest = r.tet_quality->min_dihedral_deg.min;
-    list.push_back({"smallest dihedral \u2265 " + format_number(kDihedralWarningDeg, 2) + "\u00b0",
-                    format_number(smallest, 3) + "\u00b0", smallest >= kDihedralWarningDeg});
-  }
   std::string out = "<h2>FEM readiness</h2>\n" + html::badges(list);
   if (!r.fem.problems.empty()) {
-    out += "<p>Why the surface is not FEM-ready:</p>\n<ul>\n";
+    out += "<p>Why it is not FEM-ready:</p>\n<ul>\n";
     for (const std::string& p : r.fem.problems) out += "<li>" + escape(p) + "</li>\n";
     out += "</ul>\n";
+    if (r.tets)
+      out += "<p>The tets are written (tets." + escape(config.tetrahedralize.format) +
+             ") but do not meet the thresholds above; the worst are listed under Tetrahedra.</p>\n";
   } else if (!config.tetrahedralize.enabled) {
     out += "<p class=\"note\">Tetrahedralisation was switched off.</p>\n";
   }
-  return out + "<p class=\"note\">The surface checks are TetGen's needs; the shape targets (min angle, radius "
-               "ratio) and the dihedral angle are FEM-grade goals.</p>\n";
+  return out + "<p class=\"note\">FEM-ready means: tets were made and meet every threshold of the verdict (the "
+               "configuration's <code>verdict</code> section). The surface checks are TetGen's needs; the triangle "
+               "shape targets (min angle, radius ratio) are FEM-grade goals.</p>\n";
 }
 
 std::string stage_table(const PipelineResult& r) {
@@ -90,6 +99,47 @@ std::string shape_histograms(const PipelineResult& r) {
          html::min_angle_histogram(r.final_quality, "Minimum angle, output") + "</div>\n";
 }
 
+// Each threshold of the verdict beside the tets' figure.
+std::string threshold_table(const PipelineResult& r) {
+  std::string out = "<table>\n<caption>Verdict</caption>\n" + row({"threshold", "figure", "holds"}, "th");
+  for (const ThresholdCheck& c : r.fem.checks)
+    out += "<tr><td>" + escape(requirement(c)) + "</td><td class=\"num\">" + figure(c.value) + "</td><td class=\"" +
+           (c.ok ? "ok\">yes" : "problem\">no") + "</td></tr>\n";
+  return out + "</table>\n";
+}
+
+// The tets of smallest dihedral angle, with their centroids: where to look in a viewer.
+std::string worst_tets_table(const TetQualityReport& q) {
+  if (q.worst_tets.empty()) return {};
+  std::string out = "<table>\n<caption>The worst tets (smallest dihedral angle first)</caption>\n" +
+                    row({"tet", "region", "centre x", "centre y", "centre z", "min dihedral", "max dihedral",
+                         "radius-edge", "scaled Jacobian"},
+                        "th");
+  for (const WorstTet& w : q.worst_tets) {
+    out += "<tr><td>" + std::to_string(w.index) + "</td>";
+    for (const std::string& cell :
+         {std::to_string(w.region), format_number(w.centre.x(), 6), format_number(w.centre.y(), 6),
+          format_number(w.centre.z(), 6), degrees(w.shape.min_dihedral_deg), degrees(w.shape.max_dihedral_deg),
+          figure(w.shape.radius_edge_ratio), figure(w.shape.scaled_jacobian)})
+      out += "<td class=\"num\">" + escape(cell) + "</td>";
+    out += "</tr>\n";
+  }
+  return out + "</table>\n";
+}
+
+// Per-tet histograms share a log count axis: the few tets that decide the verdict show beside
+// the bulk.
+html::HistogramOptions tet_histogram(const std::string& title, const std::string& x_label, double lo, double hi) {
+  html::HistogramOptions o;
+  o.title = title;
+  o.x_label = x_label;
+  o.unit = "tets";
+  o.lo = lo;
+  o.hi = hi;
+  o.log_counts = true;
+  return o;
+}
+
 std::string tet_section(const PipelineResult& r, const PipelineConfig& config) {
   if (!r.tet_quality) return {};
   const TetQualityReport& q = *r.tet_quality;
@@ -97,32 +147,31 @@ std::string tet_section(const PipelineResult& r, const PipelineConfig& config) {
   out += row({"tets", std::to_string(q.tetrahedra)});
   out += row({"points", std::to_string(q.points)});
   out += row({"volume", figure(q.volume)});
-  out += row({"smallest dihedral", format_number(q.min_dihedral_deg.min, 4) + "\u00b0"});
-  out += row({"dihedral p5", format_number(q.min_dihedral_deg.p5, 4) + "\u00b0"});
-  out += row({"largest dihedral", format_number(q.max_dihedral_deg.max, 4) + "\u00b0"});
+  out += row({"smallest dihedral", degrees(q.min_dihedral_deg.min)});
+  out += row({"dihedral p5", degrees(q.min_dihedral_deg.p5)});
+  out += row({"largest dihedral", degrees(q.max_dihedral_deg.max)});
   out += row({"tets with a dihedral < 10\u00b0", percent(q.tets_min_dihedral_below_10)});
   out += row({"radius-edge ratio p95 / max", figure(q.radius_edge_ratio.p95) + " / " + figure(q.radius_edge_ratio.max)});
+  out += row({"scaled Jacobian min / p5", figure(q.scaled_jacobian.min) + " / " + figure(q.scaled_jacobian.p5)});
+  out += row({"aspect ratio p95 / max", figure(q.aspect_ratio.p95) + " / " + figure(q.aspect_ratio.max)});
   out += row({"TetGen switches", r.tetgen_switches});
   out += row({"file", "tets." + config.tetrahedralize.format});
-  out += "</table>\n</div>\n<div class=\"histograms\">\n";
-  html::HistogramOptions dihedral;
-  dihedral.title = "Smallest dihedral angle per tet";
-  dihedral.x_label = "degrees";
-  dihedral.unit = "tets";
-  dihedral.lo = 0;
-  dihedral.hi = 90;
+  out += "</table>\n" + threshold_table(r) + "</div>\n<div class=\"tables\">\n" + worst_tets_table(q) +
+         "</div>\n<div class=\"histograms\">\n";
+  html::HistogramOptions dihedral = tet_histogram("Smallest dihedral angle per tet", "degrees", 0, 90);
   dihedral.bins = 45;
   dihedral.markers = html::percentile_markers(q.min_dihedral_deg);
-  html::HistogramOptions radius_edge;
-  radius_edge.title = "Radius-edge ratio per tet";
-  radius_edge.x_label = "circumradius / shortest edge   (0.612 = regular)";
-  radius_edge.unit = "tets";
-  radius_edge.lo = 0.5;
-  radius_edge.hi = 3;
+  dihedral.markers.push_back({"threshold", config.verdict.min_dihedral_deg});
+  html::HistogramOptions radius_edge =
+      tet_histogram("Radius-edge ratio per tet", "circumradius / shortest edge   (0.612 = regular)", 0.5, 3);
   radius_edge.overflow = true;
   radius_edge.markers = html::percentile_markers(q.radius_edge_ratio);
+  html::HistogramOptions jacobian =
+      tet_histogram("Scaled Jacobian per tet (Verdict)", "1 = regular, 0 = flat, < 0 = inverted", -1, 1);
+  jacobian.markers = html::percentile_markers(q.scaled_jacobian);
   return out + html::svg_histogram(q.min_dihedral_per_tet, dihedral) +
-         html::svg_histogram(q.radius_edge_per_tet, radius_edge) + "</div>\n";
+         html::svg_histogram(q.radius_edge_per_tet, radius_edge) +
+         html::svg_histogram(q.scaled_jacobian_per_tet, jacobian) + "</div>\n";
 }
 
 std::string config_section(const PipelineConfig& config) {
@@ -141,7 +190,7 @@ std::string pipeline_report_html(const PipelineResult& r, const PipelineConfig& 
   if (r.tet_quality) intro << ", " << r.tet_quality->tetrahedra << " tets";
   intro << "; " << format_fixed(r.seconds, 1) << " s in all.";
   return html::page_start(title) + "<h1>meshprep pipeline: <span class=\"file\">" + escape(r.input) + "</span></h1>\n" +
-         "<p>" + escape(intro.str()) + "</p>\n" + readiness_section(r, config) + "<h2>The final surface</h2>\n" +
+         headline(r, config) + "<p>" + escape(intro.str()) + "</p>\n" + readiness_section(r, config) + "<h2>The final surface</h2>\n" +
          surface_picture_html(r.surface, r.final_quality) + stage_table(r) + shape_histograms(r) +
          tet_section(r, config) + config_section(config) +
          html::page_end("meshprep " MESHPREP_VERSION " pipeline report.");

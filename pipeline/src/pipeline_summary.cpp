@@ -47,6 +47,7 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   if (result.from_points) json["input_points"] = result.input_points;
   json["fem_ready"] = result.fem.ready;
   json["problems"] = result.fem.problems;
+  json["thresholds"] = to_json(TetVerdict{result.fem.checks});  // each beside the final tets' figure
   Json stages = Json::array();
   for (const StageRecord& s : result.stages) stages.push_back(stage_json(s));
   json["stages"] = stages;

@@ -18,6 +18,8 @@ h2 { font-size: 17px; border-bottom: 1px solid #ddd; padding-bottom: 4px; margin
 .badge { border-radius: 6px; padding: 6px 10px; color: #fff; font-size: 14px; }
 .badge.pass { background: #2e7d32; } .badge.fail { background: #c62828; }
 .badge .value { font-weight: bold; margin-left: 6px; }
+.verdict { border-radius: 6px; padding: 8px 12px; color: #fff; font-size: 16px; font-weight: bold; }
+.verdict.pass { background: #2e7d32; } .verdict.fail { background: #c62828; }
 .note { color: #666; font-size: 13px; }
 .tables { display: flex; flex-wrap: wrap; gap: 12px 28px; align-items: flex-start; }
 .tables + .tables { margin-top: 18px; }

@@ -15,6 +15,7 @@ namespace {
 constexpr double kMarginLeft = 58, kMarginRight = 12, kMarginTop = 30, kMarginBottom = 44;
 constexpr double kOverflowGap = 10, kOverflowWidth = 18;  // the overflow bar, right of the bins
 constexpr double kMarkerRow = 12;                         // height of a marker label row
+constexpr double kLogFloor = 0.5;  // where a log count axis starts: a bin of one stays visible
 
 struct Bins {
   std::vector<std::size_t> counts;
@@ -65,11 +66,33 @@ struct Frame {
   double bins_right;  ///< right end of the regular bins (the overflow bar is beyond)
   double bars_top;    ///< where the largest count (ymax) is drawn; marker labels go above
   double lo, hi, ymax;
+  bool log_counts;    ///< counts on a log axis from kLogFloor to ymax
 
   double x(double v) const { return left + (v - lo) / (hi - lo) * (bins_right - left); }
-  double y(double count) const { return bottom - count / ymax * (bottom - bars_top); }
+  double y(double count) const {
+    if (!log_counts) return bottom - count / ymax * (bottom - bars_top);
+    if (count <= 0) return bottom;
+    return bottom - std::log(count / kLogFloor) / std::log(ymax / kLogFloor) * (bottom - bars_top);
+  }
   double overflow_left() const { return bins_right + kOverflowGap; }
 };
+
+// The top of the count axis: a round number above the largest count (linear), or the power of
+// ten at or above it, 10 at least (log).
+double count_axis_top(std::size_t largest, bool log_counts) {
+  const double top = std::max<double>(1, static_cast<double>(largest));
+  if (log_counts) return std::max(10.0, std::pow(10.0, std::ceil(std::log10(top))));
+  const double step = std::max(1.0, nice_step(top, 4));
+  return std::ceil(top / step) * step;
+}
+
+// The count axis' ticks: 1, 10, 100, ... up to ymax on a log axis, round steps from 0 otherwise.
+std::vector<double> count_ticks(const Frame& f) {
+  if (!f.log_counts) return ticks_between(0, f.ymax, nice_step(f.ymax, 4));
+  std::vector<double> ticks;
+  for (double t = 1; t <= f.ymax * (1 + 1e-9); t *= 10) ticks.push_back(t);
+  return ticks;
+}
 
 Frame make_frame(const HistogramOptions& o, double ymax) {
   Frame f{};
@@ -82,6 +105,7 @@ Frame make_frame(const HistogramOptions& o, double ymax) {
   f.lo = o.lo;
   f.hi = o.hi;
   f.ymax = ymax;
+  f.log_counts = o.log_counts;
   return f;
 }
 
@@ -116,7 +140,7 @@ void draw_overflow(std::ostream& svg, const Bins& bins, const Frame& f, const Hi
 }
 
 void draw_axes(std::ostream& svg, const Frame& f, const HistogramOptions& o) {
-  for (double t : ticks_between(0, f.ymax, nice_step(f.ymax, 4))) {
+  for (double t : count_ticks(f)) {
     svg << "<line x1=\"" << px(f.left) << "\" x2=\"" << px(f.right) << "\" y1=\"" << px(f.y(t)) << "\" y2=\""
         << px(f.y(t)) << "\" stroke=\"#e4e4e4\"/><text x=\"" << px(f.left - 4) << "\" y=\"" << px(f.y(t) + 4)
         << "\" text-anchor=\"end\">" << static_cast<long long>(t) << "</text>\n";
@@ -131,7 +155,8 @@ void draw_axes(std::ostream& svg, const Frame& f, const HistogramOptions& o) {
       << "<text x=\"" << px((f.left + f.right) / 2) << "\" y=\"" << px(o.height - 6.0)
       << "\" text-anchor=\"middle\">" << escape(o.x_label) << "</text>\n"
       << "<text transform=\"translate(14," << px((f.top + f.bottom) / 2)
-      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(o.unit) << "</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(o.log_counts ? o.unit + " (log scale)" : o.unit)
+      << "</text>\n";
 }
 
 // Where a marker is drawn: at its value, at the overflow bar beyond hi, at an edge otherwise.
@@ -174,9 +199,7 @@ std::string svg_histogram(const std::vector<double>& values, const HistogramOpti
   require_valid(options);
   const Bins bins = count_bins(values, options);
   const std::size_t largest = std::max(*std::max_element(bins.counts.begin(), bins.counts.end()), bins.overflow);
-  const double count_step = std::max(1.0, nice_step(std::max<double>(1, largest), 4));
-  const double ymax = std::ceil(std::max<double>(1, largest) / count_step) * count_step;
-  const Frame frame = make_frame(options, ymax);
+  const Frame frame = make_frame(options, count_axis_top(largest, options.log_counts));
 
   std::ostringstream svg;
   svg << "<svg class=\"histogram\" width=\"" << options.width << "\" height=\"" << options.height << "\" viewBox=\"0 0 "

@@ -12,6 +12,7 @@
 /// (pipeline_outputs.h) turns the result into files.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/tet_mesh.h"
 #include "meshprep/fem/tet_quality.h"
@@ -42,10 +43,15 @@ struct StageRecord {
   nlohmann::ordered_json details = nlohmann::ordered_json::object();  ///< the stage's own figures
 };
 
-/// Why the tets could not be made, or that they were.
+/// Whether the final tets are FEM-ready, and why not.
 struct FemVerdict {
-  bool ready = false;                 ///< tets were generated from a valid surface
-  std::vector<std::string> problems;  ///< one line each when not ready
+  /// Tets were made from a valid surface and meet every threshold (PipelineConfig::verdict).
+  bool ready = false;
+  /// One line each when not ready: a problem of the surface, TetGen's refusal, or a failed
+  /// threshold (describe(ThresholdCheck)).
+  std::vector<std::string> problems;
+  /// Every threshold beside its figure; empty when no tets were made.
+  std::vector<ThresholdCheck> checks;
 };
 
 struct PipelineResult {
@@ -57,8 +63,8 @@ struct PipelineResult {
   QualityReport input_quality;   ///< of input_surface (no reference)
   QualityReport final_quality;   ///< of surface, against input_surface
   std::vector<StageRecord> stages;
-  std::optional<TetMesh> tets;
-  std::optional<TetQualityReport> tet_quality;
+  std::optional<TetMesh> tets;                 ///< the final tets
+  std::optional<TetQualityReport> tet_quality;  ///< of `tets`: what the verdict judges
   std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)
   std::optional<double> extrusion_depth;  ///< an open surface closed into a block: its base's depth
   std::string tetgen_switches;

@@ -28,8 +28,9 @@ void prepare_output_dir(const std::string& outdir);
 /// The versions of meshprep and of the libraries it was built with.
 nlohmann::ordered_json build_versions();
 
-/// The machine summary of a run (the content of report.json): input, fem_ready and problems,
-/// one record per stage, the input's and the final surface's quality, the tets' quality.
+/// The machine summary of a run (the content of report.json): input, fem_ready and problems, the
+/// thresholds of the verdict beside their figures ({check, threshold, value, ok} each), one record
+/// per stage, the input's and the final surface's quality, the tets' quality (with the worst tets).
 nlohmann::ordered_json pipeline_summary(const PipelineResult& result, const PipelineConfig& config);
 
 /// The content of pipeline.json: {"run": `run`, then every configuration section}.

@@ -50,6 +50,10 @@ struct HistogramOptions {
   bool overflow = false;                 ///< values above hi (+inf included) get their own bar ">hi"
   std::vector<HistogramMarker> markers;  ///< e.g. the percentiles
   int width = 560, height = 270;         ///< in pixels
+  /// Counts on a logarithmic axis (ticks 1, 10, 100, ...; the axis label says "log scale"), so that
+  /// a tail of a few elements beside bins of thousands shows: the axis starts at 1/2, a bin of one
+  /// is a bar a third of a decade high, an empty bin none.
+  bool log_counts = false;
 };
 
 /// An <svg> element with a bar per bin (its range and count in a <title> tooltip), axes with ticks
