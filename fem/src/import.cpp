@@ -132,28 +132,33 @@ std::size_t orient_positively(TetMesh& mesh) {
   return reoriented;
 }
 
-// A face shared by more than two tets, or two tets with the same corners, is refused.
+// Two tets with the same corners, or a face shared by more than two tets, is refused.
 void check_face_groups(const TetFaces& faces, const std::vector<Tetrahedron>& tets, const std::string& name) {
   const auto& entries = faces.entries();
+  std::vector<std::pair<Tetrahedron, std::size_t>> group;  // sorted corners, tet
   for (std::size_t first = 0; first < entries.size();) {
     const std::size_t size = faces.group_size(first);
-    for (std::size_t i = first; i < first + size; ++i)
-      for (std::size_t j = first; j < i; ++j) {
-        const std::size_t a = entries[j].tet_face / 4, b = entries[i].tet_face / 4;
-        Tetrahedron ca = tets[a], cb = tets[b];
-        std::sort(ca.begin(), ca.end());
-        std::sort(cb.begin(), cb.end());
-        if (ca == cb)
-          fail(name, "tetrahedra " + ordinal(a) + " and " + ordinal(b) +
-                         " have the same corners (one element listed twice, e.g. in two groups?)");
+    if (size > 1) {
+      group.clear();
+      for (std::size_t i = first; i < first + size; ++i) {
+        const std::size_t t = entries[i].tet_face / 4;
+        Tetrahedron corners = tets[t];
+        std::sort(corners.begin(), corners.end());
+        group.emplace_back(corners, t);
       }
+      std::sort(group.begin(), group.end());
+      for (std::size_t i = 1; i < group.size(); ++i)
+        if (group[i].first == group[i - 1].first)
+          fail(name, "tetrahedra " + ordinal(group[i - 1].second) + " and " + ordinal(group[i].second) +
+                         " have the same corners (one element listed twice, e.g. in two groups?)");
+    }
     if (size > 2) {
       std::string which;
-      for (std::size_t i = first; i < first + size; ++i) which += " " + ordinal(entries[i].tet_face / 4);
+      for (std::size_t i = first; i < first + size && i < first + 4; ++i) which += " " + ordinal(entries[i].tet_face / 4);
       const Triangle& key = entries[first].key;
       fail(name, "the face of points " + ordinal(key[0]) + ", " + ordinal(key[1]) + ", " + ordinal(key[2]) +
                      " is shared by " + std::to_string(size) + " tetrahedra (" + which.substr(1) +
-                     "): not a valid tetrahedral mesh");
+                     (size > 4 ? " ..." : "") + "): not a valid tetrahedral mesh");
     }
     first += size;
   }
