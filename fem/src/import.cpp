@@ -4,6 +4,7 @@
 #include "meshprep/fem/import.h"
 
 #include "importers.h"
+#include "tet_faces.h"
 #include "readers.h"  // core's read_file, fail, is_finite (private to the library, shared by the readers)
 
 #include <algorithm>
@@ -41,58 +42,6 @@ const Format* find_format(const std::string& path) {
 }
 
 std::string ordinal(std::size_t index) { return "#" + std::to_string(index + 1); }
-
-// ---- the faces of the tets ----
-
-// The face of tet t opposite its corner k, oriented outward when the tet is positive.
-constexpr int outward_face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-
-Triangle face_of(const Tetrahedron& tet, int k) {
-  return {tet[outward_face[k][0]], tet[outward_face[k][1]], tet[outward_face[k][2]]};
-}
-
-Triangle sorted(Triangle corners) {
-  std::sort(corners.begin(), corners.end());
-  return corners;
-}
-
-// Every face of every tet, sorted by its corners: the entries of a face are adjacent, one per tet.
-class TetFaces {
- public:
-  struct Entry {
-    Triangle key;            // sorted corners
-    std::uint32_t tet_face;  // 4 * tet + k
-  };
-
-  explicit TetFaces(const std::vector<Tetrahedron>& tets) {
-    entries_.reserve(4 * tets.size());
-    for (std::size_t t = 0; t < tets.size(); ++t)
-      for (int k = 0; k < 4; ++k)
-        entries_.push_back({sorted(face_of(tets[t], k)), static_cast<std::uint32_t>(4 * t + k)});
-    std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
-      return a.key != b.key ? a.key < b.key : a.tet_face < b.tet_face;
-    });
-  }
-
-  const std::vector<Entry>& entries() const { return entries_; }
-
-  /// The number of entries with the key of entry `first`, from `first` on.
-  std::size_t group_size(std::size_t first) const {
-    std::size_t last = first + 1;
-    while (last < entries_.size() && entries_[last].key == entries_[first].key) ++last;
-    return last - first;
-  }
-
-  /// The first entry of the face with these sorted corners, or entries().size().
-  std::size_t find(const Triangle& key) const {
-    const auto it = std::lower_bound(entries_.begin(), entries_.end(), key,
-                                     [](const Entry& e, const Triangle& k) { return e.key < k; });
-    return it != entries_.end() && it->key == key ? static_cast<std::size_t>(it - entries_.begin()) : entries_.size();
-  }
-
- private:
-  std::vector<Entry> entries_;
-};
 
 // ---- the checks ----
 
@@ -198,13 +147,7 @@ void collect_boundary(TetMesh& mesh, const TetFileContent& content, const TetFac
     mesh.boundary_faces.push_back(triangle);
     mesh.boundary_tags.push_back(content.triangle_tags[f]);
   }
-  std::vector<std::uint32_t> unlisted;  // tet faces, to add in tet order
-  for (std::size_t first = 0; first < entries.size();) {
-    const std::size_t size = faces.group_size(first);
-    if (size == 1 && !listed[first]) unlisted.push_back(entries[first].tet_face);
-    first += size;
-  }
-  std::sort(unlisted.begin(), unlisted.end());
+  const std::vector<std::uint32_t> unlisted = faces.single_tet_faces(&listed);
   for (const std::uint32_t tet_face : unlisted) {
     mesh.boundary_faces.push_back(face_of(mesh.tets[tet_face / 4], static_cast<int>(tet_face % 4)));
     mesh.boundary_tags.push_back(1);
