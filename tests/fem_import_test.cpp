@@ -737,6 +737,23 @@ TEST_F(FemImportTest, MalformedVtuIsRefused) {
                       "invalid base64 character '*'");
 }
 
+// Two pieces: the second one's point ids count from its own first point.
+TEST_F(FemImportTest, VtuPiecesAreJoined) {
+  const auto piece = [](const char* points) {
+    return std::string("<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\"><Points><DataArray type=\"Float32\" "
+                       "NumberOfComponents=\"3\">") + points + "</DataArray></Points><Cells>"
+           "<DataArray type=\"Int32\" Name=\"connectivity\">0 1 2 3</DataArray>"
+           "<DataArray type=\"Int32\" Name=\"offsets\">4</DataArray>"
+           "<DataArray type=\"UInt8\" Name=\"types\">10</DataArray></Cells></Piece>";
+  };
+  write_text(path("pieces.vtu"), "<VTKFile type='UnstructuredGrid'><UnstructuredGrid>" + piece("0 0 0 1 0 0 0 1 0 0 0 1") +
+                                     piece("5 0 0 6 0 0 5 1 0 5 0 1") + "</UnstructuredGrid></VTKFile>");
+  const TetMesh mesh = read_tet_mesh(path("pieces.vtu"));
+  EXPECT_EQ(mesh.points.size(), 8u);
+  EXPECT_EQ(mesh.tets, (std::vector<Tetrahedron>{{0, 1, 2, 3}, {4, 5, 6, 7}}));
+  EXPECT_EQ(mesh.boundary_faces.size(), 8u);
+}
+
 TEST_F(FemImportTest, MalformedTetgenIsRefused) {
   const std::string node = "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
   const std::string ele = "1 4 0\n1 1 2 3 4\n";
