@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace meshprep {
@@ -21,17 +22,16 @@ namespace {
 
 struct Format {
   const char* extension;
-  bool tetgen;       // .node/.ele: three sibling files
-  TetFormat format;  // the others: one file
+  std::optional<TetFormat> format;  // none: TetGen's three sibling files
 };
 
 const std::array<Format, 6> formats{{
-    {"msh", false, TetFormat::Gmsh},
-    {"vtu", false, TetFormat::Vtu},
-    {"vtk", false, TetFormat::VtkLegacy},
-    {"mesh", false, TetFormat::Medit},
-    {"node", true, TetFormat::Gmsh},
-    {"ele", true, TetFormat::Gmsh},
+    {"msh", TetFormat::Gmsh},
+    {"vtu", TetFormat::Vtu},
+    {"vtk", TetFormat::VtkLegacy},
+    {"mesh", TetFormat::Medit},
+    {"node", std::nullopt},
+    {"ele", std::nullopt},
 }};
 
 const Format* find_format(const std::string& path) {
@@ -253,7 +253,7 @@ TetMesh read_tet_mesh(const std::string& path, TetReadReport* report) {
     detail::fail(path, (extension.empty() ? std::string("no file extension") : "unknown extension '." + extension + "'") +
                            " for a tetrahedral mesh (reads " + supported + ")");
   }
-  if (!format->tetgen) return detail::read_tet_mesh_from_bytes(detail::read_file(path), format->format, path, report);
+  if (format->format) return detail::read_tet_mesh_from_bytes(detail::read_file(path), *format->format, path, report);
 
   // The siblings' extensions in the case of the one given ("A.NODE" -> "A.ELE").
   const bool upper_case = std::isupper(static_cast<unsigned char>(std::filesystem::path(path).extension().string()[1]));
