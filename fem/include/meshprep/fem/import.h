@@ -6,7 +6,7 @@
 /// | extension | format | read | regions from | boundary tags from |
 /// | --- | --- | --- | --- | --- |
 /// | .msh | Gmsh 4.1 and 2.x (2.0-2.2), ASCII and binary (either byte order) | tets (type 4), triangles (2) | 3D physical group | 2D physical group |
-/// | .vtu | VTK XML UnstructuredGrid: ascii, binary (base64), appended raw or base64, zlib-compressed | tets (cell type 10), triangles (5) | cell data, see below | the same array on triangles |
+/// | .vtu | VTK XML UnstructuredGrid: ascii, binary (base64), appended raw or base64; UInt32 or UInt64 headers; zlib-compressed; either byte order; pieces joined | tets (cell type 10), triangles (5) | cell data, see below | the same array on triangles |
 /// | .vtk | VTK legacy UNSTRUCTURED_GRID 2.0-5.1, ASCII and BINARY | tets (10), triangles (5) | cell data, see below | the same array on triangles |
 /// | .mesh | Medit ASCII, MeshVersionFormatted 1-4 | Tetrahedra, Triangles | reference | reference |
 /// | .node, .ele | TetGen .node + .ele (+ .face if present), 0- or 1-based | tets | first .ele attribute | .face marker |
@@ -25,15 +25,17 @@
 /// The result keeps the TetMesh invariants:
 /// - points in file order, exactly as written (every exporter writes round-trip precision);
 ///   Gmsh files: in node-tag order (4.1 lists them grouped by entity);
-/// - tets in file order (Gmsh: in element-tag order), each positively oriented: a tet with negative volume has its corners 2
-///   and 3 swapped (formats differ in convention); a flat tet (volume 0) is kept as it is;
+/// - tets in file order (Gmsh: in element-tag order), each positively oriented: a tet with negative
+///   volume has its corners 2 and 3 swapped (formats differ in convention); a flat tet (volume 0)
+///   is kept as it is (a quality problem, not a format error);
 /// - regions >= 1: a region 0 or no region becomes 1; negative regions are refused;
 /// - boundary_faces: every face that belongs to exactly one tet is there, oriented outward (away
 ///   from its tet). The triangles the file lists come first, in file order, with the file's tag
 ///   (0 or none becomes 1); the boundary faces the file does not list follow, in tet order, with
 ///   tag 1. A listed triangle that is a face of two tets (an interface between regions, an
 ///   internal surface) is kept too, with the file's orientation and tag: boundary_faces is then
-///   more than the boundary (TetReadReport::interface_faces counts those).
+///   more than the boundary (TetReadReport::interface_faces counts those; tet_boundary.h gives
+///   the boundary alone).
 /// A mesh written by write_tet_mesh reads back with the same points, tets, regions, boundary
 /// faces and tags (bit for bit; the VTK formats store no boundary faces, so those read back
 /// computed, with tag 1).
