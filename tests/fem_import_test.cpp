@@ -295,8 +295,13 @@ TEST_F(FemImportTest, ReadsWhatGmshWrites) {
     const char* format;
     bool binary;
   };
-  const Output outputs[] = {{"a22.msh", "msh22", false}, {"b22.msh", "msh22", true}, {"a41.msh", "msh41", false},
-                            {"b41.msh", "msh41", true},  {"a.vtk", "vtk", false},    {"b.vtk", "vtk", true},
+  const Output outputs[] = {{"a22.msh", "msh22", false},
+                            {"b22.msh", "msh22", true},
+                            {"a41.msh", "msh41", false},
+                            {"b41.msh", "msh41", true},
+                            {"p41.msh", "msh41 -setnumber Mesh.SaveParametric 1", true},  // u, v after x y z
+                            {"a.vtk", "vtk", false},
+                            {"b.vtk", "vtk", true},
                             {"a.mesh", "mesh", false}};
   std::size_t num_tets = 0;
   for (const char* geo : {"box", "tagged"}) {
