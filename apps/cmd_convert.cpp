@@ -1,41 +1,89 @@
-// meshprep convert IN OUT [--binary]: between the surface formats, without changing the mesh.
+// meshprep convert IN OUT [--binary] [--msh-version 4.1|2.2]: between the surface formats, or
+// between the tet mesh formats, without changing the mesh.
 #include "cli_common.h"
+#include "tet_report.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/fem/export.h"
+#include "meshprep/fem/import.h"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 namespace meshprep::cli {
+namespace {
+
+struct ConvertOptions {
+  std::string input, output, msh_version = "4.1";
+  bool binary = false;
+};
+
+// The files a TetGen path stands for (.node, .ele, .face), or the path alone.
+std::vector<std::string> files_of(const std::string& path) {
+  const std::string extension = extension_of(path);
+  if (extension != "node" && extension != "ele") return {path};
+  std::vector<std::string> files;
+  for (const char* sibling : {".node", ".ele", ".face"})
+    files.push_back(std::filesystem::path(path).replace_extension(sibling).string());
+  return files;
+}
+
+// A format cannot hold what the input has (e.g. a tet mesh to a surface format): name both.
+template <class Write>
+void write_naming_both(const ConvertOptions& o, Write write) {
+  try {
+    write();
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(o.input + " -> " + e.what());
+  }
+}
+
+int convert_tet_mesh(const ConvertOptions& o) {
+  for (const std::string& output : files_of(o.output))
+    for (const std::string& input : files_of(o.input)) ensure_not_input(output, input);
+  TetReadReport read;
+  const TetMesh mesh = read_tet_mesh(o.input, &read);
+  note_read_changes(read);
+  TetExportOptions options;
+  options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+  options.binary = o.binary;
+  write_naming_both(o, [&] { write_tet_mesh(mesh, o.output, options); });
+  std::cout << o.input << " -> " << o.output << ": " << mesh.points.size() << " points, " << mesh.tets.size()
+            << " tets, " << mesh.boundary_faces.size() << " boundary faces\n";
+  return kSuccess;
+}
+
+int convert_surface(const ConvertOptions& o) {
+  ensure_not_input(o.output, o.input);
+  ReadReport read;
+  const TriangleSoup soup = read_soup(o.input, &read);
+  WriteOptions options;
+  options.binary = o.binary;
+  write_naming_both(o, [&] { write_soup(soup, o.output, options); });
+  std::cout << o.input << " -> " << o.output << ": " << soup.points.size() << " vertices, " << soup.triangles.size()
+            << " triangles";
+  if (read.polygons_triangulated > 0) std::cout << " (" << read.polygons_triangulated << " polygons triangulated)";
+  std::cout << '\n';
+  return kSuccess;
+}
+
+}  // namespace
 
 Action add_convert_command(CLI::App& app) {
-  struct Options {
-    std::string input, output;
-    bool binary = false;
-  };
-  auto o = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("convert", "Convert a surface mesh between OFF, OBJ, PLY and STL (format from the extension)");
-  cmd->add_option("input", o->input, "Input surface mesh")->required();
-  cmd->add_option("output", o->output, "Output surface mesh")->required();
-  cmd->add_flag("--binary", o->binary, "Binary PLY/STL instead of ASCII");
-  return [o] {
-    ensure_not_input(o->output, o->input);
-    ReadReport read;
-    const TriangleSoup soup = read_soup(o->input, &read);
-    WriteOptions options;
-    options.binary = o->binary;
-    try {
-      write_soup(soup, o->output, options);
-    } catch (const InvalidInput& e) {  // the format cannot hold this input: name both
-      throw InvalidInput(o->input + " -> " + e.what());
-    }
-    std::cout << o->input << " -> " << o->output << ": " << soup.points.size() << " vertices, " << soup.triangles.size()
-              << " triangles";
-    if (read.polygons_triangulated > 0) std::cout << " (" << read.polygons_triangulated << " polygons triangulated)";
-    std::cout << '\n';
-    return kSuccess;
-  };
+  auto o = std::make_shared<ConvertOptions>();
+  CLI::App* cmd = app.add_subcommand("convert",
+                                     "Convert a surface mesh between OFF, OBJ, PLY and STL, or a tet mesh from .msh .vtu .vtk "
+                                     ".mesh .node to those and .inp (format from the extension)");
+  cmd->add_option("input", o->input, "Input surface or tet mesh (a TetGen mesh by its .node or .ele)")->required();
+  cmd->add_option("output", o->output, "Output mesh of the same kind")->required();
+  cmd->add_flag("--binary", o->binary, "Binary PLY/STL/.msh instead of ASCII");
+  cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for a .msh output")
+      ->check(CLI::IsMember({"4.1", "2.2"}))
+      ->capture_default_str();
+  return [o] { return is_tet_mesh_path(o->input) ? convert_tet_mesh(*o) : convert_surface(*o); };
 }
 
 }  // namespace meshprep::cli

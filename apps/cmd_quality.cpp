@@ -1,14 +1,20 @@
 // meshprep quality MESH [--reference REF] [--json FILE|-] [--csv FILE] [--vtk FILE] [--html FILE]
 //                       [--fail-on CONDITIONS] [--worst N] [--samples N] [--threads N]
+// MESH is a surface (.off .obj .ply .stl) or a tet mesh (.msh .vtu .vtk .mesh .node .ele); a tet
+// mesh has the text summary and --json (tet_report.h), not the surface-only outputs.
 #include "cli_common.h"
+#include "tet_report.h"
 
+#include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/fem/import.h"
 #include "meshprep/quality/quality_gate.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/report_writers.h"
 
 #include <iostream>
 #include <memory>
+#include <utility>
 
 namespace meshprep::cli {
 namespace {
@@ -43,11 +49,39 @@ nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport
   return j;
 }
 
+// Exit 1 with the conditions of the gate that hold, else 0.
+int apply_gate(const std::vector<GateCondition>& gate, const nlohmann::ordered_json& json) {
+  const auto failed = failed_conditions(gate, json);
+  if (failed.empty()) return kSuccess;
+  std::cerr << "meshprep: quality gate failed:";
+  for (const auto& c : failed) std::cerr << ' ' << c.text << " (is " << c.actual.dump() << ')';
+  std::cerr << '\n';
+  return kWorkFailed;
+}
+
+int run_tet_quality(const QualityOptions& o, const std::vector<GateCondition>& gate) {
+  const std::pair<const std::string*, const char*> surface_only[] = {
+      {&o.reference, "--reference"}, {&o.csv, "--csv"}, {&o.vtk, "--vtk"}, {&o.html, "--html"}};
+  for (const auto& [value, option] : surface_only)
+    if (!value->empty())
+      throw InvalidInput(std::string(option) + " is for surface meshes and " + o.input +
+                         " is a tet mesh (its report: the text summary, or --json)");
+  ensure_not_input(o.json, o.input);
+  TetReadReport read;
+  const TetMesh mesh = read_tet_mesh(o.input, &read);
+  note_read_changes(read);
+  const nlohmann::ordered_json json = tet_mesh_report(mesh, read);
+  if (!o.json.empty()) emit_json(json, o.json);
+  if (o.json != "-") write_tet_summary(std::cout, json);
+  return apply_gate(gate, json);
+}
+
 int run_quality(const QualityOptions& o) {
   const ThreadLimit parallelism(o.threads);
   // Parse the gate first: a typo in it is a usage error, found before any work.
   std::vector<GateCondition> gate;
   if (!o.fail_on.empty()) gate = parse_quality_gate(o.fail_on);
+  if (is_tet_mesh_path(o.input)) return run_tet_quality(o, gate);
 
   for (const std::string* out : {&o.json, &o.csv, &o.vtk, &o.html}) {
     ensure_not_input(*out, o.input);
@@ -72,31 +106,29 @@ int run_quality(const QualityOptions& o) {
   if (!o.html.empty()) write_html(o.html, soup, report);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") write_text_summary(std::cout, report);
-
-  const auto failed = failed_conditions(gate, json);
-  if (failed.empty()) return kSuccess;
-  std::cerr << "meshprep: quality gate failed:";
-  for (const auto& c : failed) std::cerr << ' ' << c.text << " (is " << c.actual.dump() << ')';
-  std::cerr << '\n';
-  return kWorkFailed;
+  return apply_gate(gate, json);
 }
 
 }  // namespace
 
 Action add_quality_command(CLI::App& app) {
   auto o = std::make_shared<QualityOptions>();
-  CLI::App* cmd = app.add_subcommand("quality", "Measure a surface mesh: topology, triangle shape, distance to a reference");
-  cmd->add_option("mesh", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
-  cmd->add_option("--reference", o->reference, "Reference surface: adds Hausdorff/RMS/mean distance and volume change");
+  CLI::App* cmd = app.add_subcommand(
+      "quality", "Measure a surface mesh (topology, triangle shape, distance to a reference) or a tet mesh (tet shape, boundary)");
+  cmd->add_option("mesh", o->input, "Surface mesh (.off .obj .ply .stl) or tet mesh (.msh .vtu .vtk .mesh .node .ele)")
+      ->required();
+  cmd->add_option("--reference", o->reference,
+                  "Reference surface: adds Hausdorff/RMS/mean distance and volume change (surfaces only)");
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the report as JSON to FILE ('-' = stdout, replaces the table)");
-  cmd->add_option("--csv", o->csv, "Write one row per face to FILE");
+  cmd->add_option("--csv", o->csv, "Write one row per face to FILE (surfaces only)");
   cmd->add_option("--vtk", o->vtk, "Write the mesh with per-face metrics as cell data and the surface variation "
-                  "of each vertex as point data (legacy VTK, for ParaView)");
-  cmd->add_option("--html", o->html, "Write a self-contained HTML report with pictures of the surface and histograms");
+                  "of each vertex as point data (legacy VTK, for ParaView; surfaces only)");
+  cmd->add_option("--html", o->html,
+                  "Write a self-contained HTML report with pictures of the surface and histograms (surfaces only)");
   cmd->add_option("--fail-on", o->fail_on,
                   "Quality gate: exit 1 if any condition holds, e.g. \"radius_ratio.p95>3,closed=false\"");
-  cmd->add_option("--worst", o->worst, "How many worst faces to list")->capture_default_str();
+  cmd->add_option("--worst", o->worst, "How many worst faces to list (surfaces)")->capture_default_str();
   add_samples_option(*cmd, o->samples);
   return [o] { return run_quality(*o); };
 }

@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libopenmesh-dev libtet1.5-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev libpng-dev
+  zlib1g-dev  # the .vtu reader inflates vtkZLibDataCompressor data
   python3
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy

@@ -2,7 +2,7 @@
 # `meshprep tetrahedralize` on the real binary: success, solver targets, diagnoses of surfaces
 # that are not FEM-ready (exit 1, offending faces named, no tet mesh written), tets that do not
 # meet the verdict's thresholds (exit 1, each failed threshold named, the tets written), usage
-# errors (exit 2).
+# errors (exit 2); then `meshprep quality` and `meshprep convert` on the tet meshes it wrote.
 # Usage: cli_fem_test.sh MESHPREP_BINARY
 set -uo pipefail
 bin=$1
@@ -114,6 +114,55 @@ assert j['fem_ready'] == (q['min_dihedral_deg']['min'] >= 10 and q['max_dihedral
 "$bin" tetrahedralize terrain.off -o terrain.msh > /dev/null 2> err.txt; expect_exit "terrain without extrusion" 1 $?
 "$bin" tetrahedralize cube.off -o cube2.msh --extrude-base 1 > /dev/null 2> err.txt; expect_exit "extruding a closed surface" 1 $?
 grep -q "cube.off: cannot extrude" err.txt && ok || bad "extrusion error names the file"
+
+# `quality` on tet meshes: the tets and volume tetrahedralize reported, the closed boundary of the
+# cube (TetGen may split its 12 triangles, tag 1), the surface-only options refused.
+for mesh in formats/c41.msh formats/c.vtu formats/c41b.msh formats/c.node; do
+  rm -f q.json
+  "$bin" quality $mesh --json q.json > stdout.txt 2> err.txt
+  expect_exit "quality $mesh" 0 $?
+  python3 -c "
+import json; f = json.load(open('formats.json'))['tet_quality']; j = json.load(open('q.json')); q = j['tet_quality']
+assert q['tetrahedra'] == f['tetrahedra'] and q['points'] == f['points'] and abs(q['volume'] - 1) < 1e-12, q
+b = j['boundary']; assert b['closed'] and b['manifold'] and b['oriented'] and b['faces'] >= 12 and b['genus'] == 0, b
+assert q['inverted_tets'] == 0 and j['input']['tets_reoriented'] == 0, j" && ok || bad "quality $mesh json"
+  grep -q "^Tet mesh quality: $mesh" stdout.txt && grep -q "min dihedral (deg)" stdout.txt && ok || bad "quality $mesh text"
+done
+"$bin" quality formats/c.vtu --json - > stdout.txt 2> err.txt; expect_exit "quality --json -" 0 $?
+python3 -c "import json; json.load(open('stdout.txt'))" && ok || bad "quality --json - is JSON alone"
+"$bin" quality formats/c41.msh --fail-on "boundary.closed=true" > /dev/null 2> err.txt
+expect_exit "quality gate on a tet mesh" 1 $?
+grep -q "quality gate failed: boundary.closed=true" err.txt && ok || bad "gate names the condition"
+"$bin" quality formats/c41.msh --fail-on "tet_quality.inverted_tets>0" > /dev/null 2> err.txt
+expect_exit "passing gate" 0 $?
+for option in "--csv q.csv" "--vtk q.vtk" "--html q.html" "--reference cube.off"; do
+  "$bin" quality formats/c41.msh $option > /dev/null 2> err.txt; expect_exit "quality $option on tets" 2 $?
+  grep -q "is for surface meshes" err.txt && ok || bad "$option: no clear message"
+done
+[ ! -e q.csv ] && [ ! -e q.vtk ] && [ ! -e q.html ] && ok || bad "a surface-only output was written"
+
+# A broken or surface-only volume file: exit 2, one line naming the file, no report written.
+head -c 300 formats/c41.msh > broken.msh
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n$Elements\n1\n1 2 0 1 2 3\n$EndElements\n' > surface.msh
+for mesh in broken.msh surface.msh; do
+  rm -f q.json
+  "$bin" quality $mesh --json q.json > stdout.txt 2> err.txt; expect_exit "quality $mesh" 2 $?
+  [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "^meshprep: error: $mesh: " err.txt && ok || bad "$mesh: not one line naming the file"
+  [ ! -e q.json ] && [ ! -s stdout.txt ] && ok || bad "$mesh: something was written"
+done
+grep -q "no tetrahedra" err.txt && ok || bad "surface.msh: the message says there are no tets"
+
+# `convert` between tet formats keeps the mesh: the converted file's report is the same.
+"$bin" convert formats/c41.msh conv.vtk > /dev/null 2> err.txt; expect_exit "convert msh -> vtk" 0 $?
+"$bin" convert conv.vtk conv.msh --msh-version 2.2 --binary > /dev/null 2> err.txt; expect_exit "convert vtk -> msh 2.2" 0 $?
+"$bin" quality conv.msh --json conv.json > /dev/null 2> err.txt
+"$bin" quality formats/c41.msh --json orig.json > /dev/null 2> err.txt
+python3 -c "
+import json; a = json.load(open('conv.json')); b = json.load(open('orig.json'))
+assert a['tet_quality'] == b['tet_quality'] and a['boundary']['faces'] == b['boundary']['faces'], (a, b)
+assert a['input']['format'] == 'msh 2.2 binary', a" && ok || bad "convert keeps the mesh"
+"$bin" convert broken.msh conv2.vtu > /dev/null 2> err.txt; expect_exit "convert a broken tet mesh" 2 $?
+[ ! -e conv2.vtu ] && ok || bad "convert wrote from a broken input"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -4,10 +4,9 @@
 #include "meshprep/fem/export.h"
 #include "tet_test_meshes.h"
 #include "scratch_dir.h"
+#include "third_party_tools.h"
 
 #include <gtest/gtest.h>
-
-#include <sys/wait.h>
 
 #include <array>
 #include <cmath>
@@ -32,18 +31,8 @@ constexpr std::size_t kPoints = 27;
 constexpr std::size_t kTets = 48;
 constexpr std::size_t kFaces = 48;
 
-bool succeeds(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
-
-// The first Python 3 that can import meshio: the one on PATH, else the system one (a pyenv or
-// venv python3 on PATH does not see Debian's python3-meshio).
-std::string python_with_meshio() {
-  for (const char* python : {"python3", "/usr/bin/python3"})
-    if (succeeds(std::string(python) + " -c 'import meshio, numpy' >/dev/null 2>&1")) return python;
-  return "";
-}
+using test::python_with_meshio;
+using test::succeeds;
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -97,7 +86,7 @@ class FemExportTest : public test::ScratchDirTest {
 TEST_F(FemExportTest, ThirdPartyReadersReadEveryFormat) {
   const std::string python = python_with_meshio();
   if (python.empty()) GTEST_SKIP() << "no python3 with meshio and numpy (apt-get install python3-meshio)";
-  if (!succeeds("command -v gmsh >/dev/null 2>&1")) GTEST_SKIP() << "gmsh is not on PATH (apt-get install gmsh)";
+  if (!test::has_gmsh()) GTEST_SKIP() << "gmsh is not on PATH (apt-get install gmsh)";
   write_all_formats(test::cube_tets(2));
   EXPECT_TRUE(succeeds(readback_command(python, kPoints, kTets)));
 }
@@ -376,7 +365,7 @@ TEST_F(FemExportTest, MeshWithoutBoundaryFacesIsWritten) {
   ASSERT_EQ(face.size(), 2u);
   EXPECT_EQ(face[1], "0 1");
   const std::string python = python_with_meshio();
-  if (!python.empty() && succeeds("command -v gmsh >/dev/null 2>&1")) {
+  if (!python.empty() && test::has_gmsh()) {
     EXPECT_TRUE(succeeds(readback_command(python, 8, 6)));
   }
 }

@@ -18,7 +18,7 @@ std::string_view without_plus(std::string_view token) {
 }  // namespace
 
 TextScanner::TextScanner(std::string_view text, char comment, std::size_t first_line)
-    : pos_(text.data()), end_(text.data() + text.size()), comment_(comment), line_(first_line) {}
+    : begin_(text.data()), pos_(text.data()), end_(text.data() + text.size()), comment_(comment), line_(first_line) {}
 
 void TextScanner::skip_blanks() {
   while (pos_ != end_ && is_blank(*pos_)) ++pos_;
@@ -50,6 +50,21 @@ bool TextScanner::at_line_end() {
 void TextScanner::skip_line() {
   const void* newline = std::memchr(pos_, '\n', static_cast<std::size_t>(end_ - pos_));
   pos_ = newline ? static_cast<const char*>(newline) : end_;
+}
+
+bool TextScanner::next_line() {
+  skip_line();
+  if (pos_ == end_) return false;
+  ++pos_;
+  ++line_;
+  return true;
+}
+
+bool TextScanner::take_bytes(std::size_t n, std::string_view& bytes) {
+  if (bytes_left() < n) return false;
+  bytes = {pos_, n};
+  pos_ += n;
+  return true;
 }
 
 bool parse_double(std::string_view token, double& value) {

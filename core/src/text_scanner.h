@@ -1,7 +1,8 @@
 #pragma once
 /// \file text_scanner.h
 /// Tokenizer shared by the text readers: whitespace-separated tokens, line numbers, optional
-/// end-of-line comments. Works on an in-memory buffer; never allocates.
+/// end-of-line comments, and raw byte blocks for formats that embed binary data between text
+/// lines (Gmsh binary .msh, legacy VTK BINARY). Works on an in-memory buffer; never allocates.
 
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +26,16 @@ class TextScanner {
   bool at_line_end();
   /// Discards the rest of the current line.
   void skip_line();
+  /// Discards the rest of the current line and its line end: the scanner is at the first byte of
+  /// the next line (where a binary block starts). False if the text ends on this line.
+  bool next_line();
+  /// The next `n` bytes as they are, without skipping anything before them (binary data); false,
+  /// consuming nothing, if fewer are left. Line ends among them are not counted in line().
+  bool take_bytes(std::size_t n, std::string_view& bytes);
+  /// Bytes from the start of the text to the scanner's position (for messages about binary data).
+  std::size_t offset() const { return static_cast<std::size_t>(pos_ - begin_); }
+  /// Bytes left after the scanner's position.
+  std::size_t bytes_left() const { return static_cast<std::size_t>(end_ - pos_); }
   /// Number (1-based) of the line the scanner is on.
   std::size_t line() const { return line_; }
 
@@ -32,6 +43,7 @@ class TextScanner {
   bool is_comment(char c) const { return comment_ != '\0' && c == comment_; }
   void skip_blanks();
 
+  const char* begin_;
   const char* pos_;
   const char* end_;
   char comment_;

@@ -1,0 +1,152 @@
+// tet_mesh_report, note_read_changes, write_tet_summary (tet_report.h).
+#include "tet_report.h"
+
+#include "meshprep/fem/tet_boundary.h"
+#include "meshprep/fem/tet_quality.h"
+#include "meshprep/quality/number_format.h"
+#include "meshprep/quality/topology.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace meshprep::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json boundary_json(const TetMesh& mesh, const TetReadReport& read) {
+  TriangleSoup boundary;
+  boundary.points = mesh.points;
+  boundary.triangles = tet_boundary(mesh);
+  const Topology topology = analyze_topology(boundary);
+  std::map<int, std::size_t> per_tag;
+  for (const int tag : mesh.boundary_tags) ++per_tag[tag];
+  Json tags = Json::object();
+  for (const auto& [tag, count] : per_tag) tags[std::to_string(tag)] = count;
+  return {{"faces", boundary.triangles.size()},
+          {"interface_faces", read.interface_faces},
+          {"faces_per_tag", tags},
+          {"closed", topology.closed},
+          {"manifold", topology.manifold},
+          {"oriented", topology.oriented},
+          {"components", topology.components},
+          {"non_manifold_edges", topology.non_manifold_edges},
+          {"non_manifold_vertices", topology.non_manifold_vertices},
+          {"genus", topology.genus ? Json(*topology.genus) : Json(nullptr)}};
+}
+
+// "min_dihedral_deg" -> "min dihedral (deg)".
+std::string label_of(std::string key) {
+  const std::string degrees = "_deg";
+  const bool in_degrees = key.size() > degrees.size() && key.compare(key.size() - degrees.size(), degrees.size(), degrees) == 0;
+  if (in_degrees) key.resize(key.size() - degrees.size());
+  std::replace(key.begin(), key.end(), '_', ' ');
+  return in_degrees ? key + " (deg)" : key;
+}
+
+bool is_distribution(const Json& value) { return value.is_object() && value.contains("p50"); }
+
+// Fractions of the tets ("tets_min_dihedral_below_10") read best as percentages.
+bool is_fraction(const std::string& key) {
+  return key.find("_below_") != std::string::npos || key.find("_above_") != std::string::npos;
+}
+
+std::string value_text(const std::string& key, const Json& value) {
+  if (value.is_null()) return "n/a";
+  if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
+  if (value.is_number_integer()) return value.dump();
+  if (value.is_number()) {
+    return is_fraction(key) ? format_fixed(100 * value.get<double>(), 2) + " %" : format_number(value.get<double>(), 4);
+  }
+  if (value.is_object()) {  // {"1": 12, "2": 4}
+    std::string text;
+    for (const auto& [k, v] : value.items()) text += (text.empty() ? "" : ", ") + k + ": " + value_text(k, v);
+    return text;
+  }
+  return value.dump();
+}
+
+using Rows = std::vector<std::pair<std::string, std::string>>;
+
+void write_rows(std::ostream& out, const Rows& rows, std::size_t width) {
+  for (const auto& [label, text] : rows) out << "  " << std::left << std::setw(int(width + 2)) << label << text << '\n';
+}
+
+void write_distributions(std::ostream& out, const std::vector<std::pair<std::string, const Json*>>& distributions) {
+  const char* const columns[] = {"min", "mean", "p5", "p50", "p95", "max"};
+  std::size_t label_width = std::string("tet shape").size();
+  for (const auto& [label, d] : distributions) label_width = std::max(label_width, label.size() + 2);
+  std::vector<std::vector<std::string>> cells;
+  std::vector<std::size_t> widths;
+  for (const char* column : columns) widths.push_back(std::string(column).size());
+  for (const auto& [label, d] : distributions) {
+    cells.emplace_back();
+    for (std::size_t c = 0; c < std::size(columns); ++c) {
+      cells.back().push_back(value_text(columns[c], (*d)[columns[c]]));
+      widths[c] = std::max(widths[c], cells.back().back().size());
+    }
+  }
+  out << std::left << std::setw(int(label_width)) << "tet shape" << std::right;
+  for (std::size_t c = 0; c < std::size(columns); ++c) out << "  " << std::setw(int(widths[c])) << columns[c];
+  out << '\n';
+  for (std::size_t r = 0; r < distributions.size(); ++r) {
+    out << "  " << std::left << std::setw(int(label_width - 2)) << distributions[r].first << std::right;
+    for (std::size_t c = 0; c < cells[r].size(); ++c) out << "  " << std::setw(int(widths[c])) << cells[r][c];
+    out << '\n';
+  }
+  out << std::left;
+}
+
+}  // namespace
+
+Json tet_mesh_report(const TetMesh& mesh, const TetReadReport& read) {
+  Json report;
+  report["file"] = read.path;
+  report["input"] = {{"format", read.format},
+                     {"triangles_in_file", read.triangles_in_file},
+                     {"duplicate_triangles", read.duplicate_triangles},
+                     {"untagged_boundary_faces", read.untagged_boundary_faces},
+                     {"tets_reoriented", read.tets_reoriented},
+                     {"elements_ignored", read.elements_ignored}};
+  report["tet_quality"] = to_json(analyze_tet_quality(mesh));
+  report["boundary"] = boundary_json(mesh, read);
+  return report;
+}
+
+void note_read_changes(const TetReadReport& read) {
+  const auto note = [&](std::size_t count, const char* what) {
+    if (count > 0) std::cerr << "meshprep: note: " << read.path << ": " << count << ' ' << what << '\n';
+  };
+  note(read.tets_reoriented, "tets with negative volume were reoriented (corners 2 and 3 swapped)");
+  note(read.elements_ignored, "points, lines or other lower-dimensional elements were skipped");
+  note(read.duplicate_triangles, "triangles listed twice were read once (with the first one's tag)");
+}
+
+void write_tet_summary(std::ostream& out, const Json& report) {
+  Rows counts, boundary;
+  std::vector<std::pair<std::string, const Json*>> distributions;
+  for (const auto& [key, value] : report["tet_quality"].items()) {
+    if (is_distribution(value))
+      distributions.emplace_back(label_of(key), &value);
+    else
+      counts.emplace_back(label_of(key), value_text(key, value));
+  }
+  for (const auto& [key, value] : report["boundary"].items()) boundary.emplace_back(label_of(key), value_text(key, value));
+  std::size_t width = 0;
+  for (const Rows* rows : {&counts, &boundary})
+    for (const auto& row : *rows) width = std::max(width, row.first.size());
+
+  out << "Tet mesh quality: " << report["file"].get<std::string>() << " ("
+      << report["input"]["format"].get<std::string>() << ")\n";
+  write_rows(out, counts, width);
+  write_distributions(out, distributions);
+  out << "Boundary (the faces of one tet)\n";
+  write_rows(out, boundary, width);
+}
+
+}  // namespace meshprep::cli

@@ -1,0 +1,496 @@
+// VTK XML UnstructuredGrid reader, .vtu ("VTK File Formats", section "XML File Formats";
+// https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html).
+//
+// A data array's values are stored as format="ascii" (text), "binary" (base64 inside the element)
+// or "appended" (at the array's offset in <AppendedData>, raw bytes or base64 as its encoding
+// says; the data starts after the '_' that follows the tag). Binary data is a block: a header of
+// header_type (UInt32 unless the file says UInt64) holding the data's byte count, then the data,
+// in the file's byte_order. With compressor="vtkZLibDataCompressor" the header is [number of
+// blocks, block size, size of the last block (0 = a full block), compressed size of each block]
+// and the zlib-compressed blocks follow. VTK base64-encodes a header and its data as two streams,
+// one after the other (so padding may end the header's), meshio as one when uncompressed:
+// decoding four characters at a time, with padding allowed in any group, reads both.
+//
+// Only what a tet mesh needs is read: the points, the cells' connectivity, offsets and types, and
+// a region array among the cell data (vtk_cells.h); everything else is skipped unread.
+#include "importers.h"
+#include "vtk_cells.h"
+
+#include "byte_order.h"
+#include "readers.h"
+#include "text_scanner.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+
+namespace meshprep::detail {
+namespace {
+
+// A problem with one data array's content; decode() names the array.
+struct BadData {
+  std::string problem;
+};
+
+// ---- a minimal XML tag scanner: tags and their attributes, nothing else ----
+
+struct XmlTag {
+  std::string_view name;
+  bool closing = false;       // </name>
+  bool self_closing = false;  // <name ... />
+  std::vector<std::pair<std::string_view, std::string_view>> attributes;
+  std::size_t begin = 0;  // offset of '<'
+  std::size_t end = 0;    // offset after '>'
+
+  std::optional<std::string_view> attribute(std::string_view key) const {
+    for (const auto& [k, v] : attributes)
+      if (k == key) return v;
+    return std::nullopt;
+  }
+};
+
+bool is_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == ':' ||
+         c == '-' || c == '.';
+}
+
+bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+class XmlScanner {
+ public:
+  XmlScanner(const std::string& name, std::string_view data) : name_(name), data_(data) {}
+
+  // The next tag at or after `from`, skipping text, comments, declarations and DOCTYPEs; false at the end.
+  bool next(std::size_t from, XmlTag& tag) const {
+    for (std::size_t at = from;;) {
+      at = data_.find('<', at);
+      if (at == std::string_view::npos) return false;
+      const std::string_view rest = data_.substr(at);
+      if (rest.substr(0, 4) == "<!--") {
+        at = skip_to(at, "-->");
+      } else if (rest.substr(0, 2) == "<?") {
+        at = skip_to(at, "?>");
+      } else if (rest.substr(0, 2) == "<!") {
+        at = skip_to(at, ">");
+      } else {
+        parse_tag(at, tag);
+        return true;
+      }
+    }
+  }
+
+  // "<name>: line N: <problem>" for the byte at `offset`.
+  [[noreturn]] void fail_at(std::size_t offset, const std::string& problem) const {
+    const auto line = static_cast<std::size_t>(std::count(data_.begin(), data_.begin() + std::min(offset, data_.size()), '\n'));
+    fail(name_, at_line(line + 1) + problem);
+  }
+
+ private:
+  std::size_t skip_to(std::size_t at, std::string_view end) const {
+    const std::size_t found = data_.find(end, at);
+    if (found == std::string_view::npos) fail_at(at, "unterminated XML markup (no " + std::string(end) + ")");
+    return found + end.size();
+  }
+
+  std::string_view name_at(std::size_t& i) const {
+    const std::size_t start = i;
+    while (i < data_.size() && is_name_char(data_[i])) ++i;
+    if (i == start) fail_at(start, "malformed XML tag");
+    return data_.substr(start, i - start);
+  }
+
+  void skip_spaces(std::size_t& i) const {
+    while (i < data_.size() && is_space(data_[i])) ++i;
+  }
+
+  void parse_tag(std::size_t at, XmlTag& tag) const {
+    tag = XmlTag{};
+    tag.begin = at;
+    std::size_t i = at + 1;
+    if (i < data_.size() && data_[i] == '/') {
+      tag.closing = true;
+      ++i;
+    }
+    tag.name = name_at(i);
+    for (;;) {
+      skip_spaces(i);
+      if (i >= data_.size()) fail_at(at, "unterminated XML tag <" + std::string(tag.name) + ">");
+      if (data_[i] == '>') break;
+      if (data_[i] == '/' && i + 1 < data_.size() && data_[i + 1] == '>') {
+        tag.self_closing = true;
+        ++i;
+        break;
+      }
+      const std::string_view key = name_at(i);
+      skip_spaces(i);
+      if (i >= data_.size() || data_[i] != '=') fail_at(i, "attribute " + quoted(key) + " has no value");
+      ++i;
+      skip_spaces(i);
+      if (i >= data_.size() || (data_[i] != '"' && data_[i] != '\'')) fail_at(i, "attribute " + quoted(key) + " is not quoted");
+      const std::size_t close = data_.find(data_[i], i + 1);
+      if (close == std::string_view::npos) fail_at(i, "attribute " + quoted(key) + " is not closed");
+      tag.attributes.emplace_back(key, data_.substr(i + 1, close - i - 1));
+      i = close + 1;
+    }
+    tag.end = i + 1;
+  }
+
+  const std::string& name_;
+  std::string_view data_;
+};
+
+// ---- the bytes of binary data: raw, or base64-decoded on the way ----
+
+int base64_value(char c) {
+  if (c >= 'A' && c <= 'Z') return c - 'A';
+  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+  if (c >= '0' && c <= '9') return c - '0' + 52;
+  if (c == '+') return 62;
+  if (c == '/') return 63;
+  return -1;
+}
+
+class ByteStream {
+ public:
+  ByteStream(std::string_view data, bool base64) : data_(data), base64_(base64) {}
+
+  // At most this many bytes are left (exact for raw data).
+  std::size_t max_left() const { return pending_.size() + (base64_ ? (data_.size() - pos_) / 4 * 3 : data_.size() - pos_); }
+
+  // The next n bytes.
+  std::string take(std::size_t n) {
+    if (n > max_left()) throw BadData{"the data ends before the " + std::to_string(n) + " bytes it announces"};
+    std::string out;
+    out.reserve(n);
+    if (!base64_) {
+      out.assign(data_.substr(pos_, n));
+      pos_ += n;
+      return out;
+    }
+    while (out.size() < n) {
+      if (pending_.empty()) decode_group();
+      const std::size_t moved = std::min(n - out.size(), pending_.size());
+      out.append(pending_, 0, moved);
+      pending_.erase(0, moved);
+    }
+    return out;
+  }
+
+ private:
+  // Four characters (blanks between them skipped) into 1-3 bytes in pending_.
+  void decode_group() {
+    int values[4];
+    int padding = 0;
+    for (int k = 0; k < 4; ++k) {
+      while (pos_ < data_.size() && is_space(data_[pos_])) ++pos_;
+      if (pos_ == data_.size()) throw BadData{"the base64 data ends before the bytes it announces"};
+      const char c = data_[pos_++];
+      if (c == '=' && k >= 2) {
+        ++padding;
+        values[k] = 0;
+        continue;
+      }
+      values[k] = base64_value(c);
+      if (values[k] < 0 || padding > 0) throw BadData{"invalid base64 character " + quoted(std::string_view(&c, 1))};
+    }
+    const unsigned bits = (static_cast<unsigned>(values[0]) << 18) | (static_cast<unsigned>(values[1]) << 12) |
+                          (static_cast<unsigned>(values[2]) << 6) | static_cast<unsigned>(values[3]);
+    const char bytes[3] = {static_cast<char>(bits >> 16), static_cast<char>((bits >> 8) & 0xff),
+                           static_cast<char>(bits & 0xff)};
+    pending_.append(bytes, static_cast<std::size_t>(3 - padding));
+  }
+
+  std::string_view data_;
+  bool base64_;
+  std::size_t pos_ = 0;
+  std::string pending_;  // decoded, not yet taken
+};
+
+// zlib cannot expand data more than about 1032 times (deflate's longest match per bit sequence):
+// a block announcing more is a lie, refused before memory is reserved for it.
+constexpr std::uint64_t max_zlib_ratio = 1032;
+
+struct BlockFormat {
+  bool little_endian = true;
+  bool header_64 = false;  // header_type="UInt64"
+  bool zlib = false;
+};
+
+std::uint64_t header_value(ByteStream& in, const BlockFormat& f) {
+  const std::string bytes = in.take(f.header_64 ? 8 : 4);
+  return f.header_64 ? load_value<std::uint64_t>(bytes.data(), f.little_endian)
+                     : load_value<std::uint32_t>(bytes.data(), f.little_endian);
+}
+
+std::string inflate_block(const std::string& compressed, std::uint64_t size, std::uint64_t block) {
+  if (size > compressed.size() * max_zlib_ratio + 64)
+    throw BadData{"compressed block " + std::to_string(block) + " announces " + std::to_string(size) +
+                  " bytes from " + std::to_string(compressed.size()) + ", more than zlib can expand"};
+  std::string out(size, '\0');
+  uLongf out_size = static_cast<uLongf>(size);
+  const int status = uncompress(reinterpret_cast<Bytef*>(out.data()), &out_size,
+                                reinterpret_cast<const Bytef*>(compressed.data()), static_cast<uLong>(compressed.size()));
+  if (status != Z_OK || out_size != size)
+    throw BadData{"compressed block " + std::to_string(block) + " does not inflate to the " + std::to_string(size) +
+                  " bytes its header announces (zlib: " + (status == Z_OK ? "fewer bytes" : zError(status)) + ")"};
+  return out;
+}
+
+// One binary block: header, then the data (inflated when compressed).
+std::string read_block(ByteStream& in, const BlockFormat& f) {
+  if (!f.zlib) return in.take(header_value(in, f));
+  const std::uint64_t num_blocks = header_value(in, f);
+  const std::uint64_t block_size = header_value(in, f);
+  const std::uint64_t last_size = header_value(in, f);
+  const std::size_t header_bytes = f.header_64 ? 8 : 4;
+  if (num_blocks > in.max_left() / header_bytes)
+    throw BadData{"the compression header announces " + std::to_string(num_blocks) + " blocks, more than the data holds"};
+  std::vector<std::uint64_t> compressed_sizes(num_blocks);
+  for (std::uint64_t& size : compressed_sizes) size = header_value(in, f);
+  std::string data;
+  for (std::uint64_t b = 0; b < num_blocks; ++b) {
+    const std::uint64_t size = b + 1 == num_blocks && last_size != 0 ? last_size : block_size;
+    data += inflate_block(in.take(compressed_sizes[b]), size, b);
+  }
+  return data;
+}
+
+// ---- the file's structure ----
+
+struct DataArray {
+  std::string_view name, type, format;
+  std::uint64_t components = 1;
+  std::uint64_t offset = 0;  // appended only
+  std::string_view text;     // ascii and binary only
+  std::size_t tag_offset = 0;
+};
+
+struct Piece {
+  std::uint64_t num_points = 0, num_cells = 0;
+  std::optional<DataArray> points, connectivity, offsets, types, region;
+  int region_rank = 0;  // region_array_rank of `region`
+  std::size_t tag_offset = 0;
+};
+
+enum class Container { None, Points, Cells, CellData, Other };
+
+std::optional<VtkType> vtk_type(std::string_view name) {
+  const std::pair<std::string_view, VtkType> types[] = {
+      {"Int8", VtkType::Int8},       {"UInt8", VtkType::UInt8},     {"Int16", VtkType::Int16},
+      {"UInt16", VtkType::UInt16},   {"Int32", VtkType::Int32},     {"UInt32", VtkType::UInt32},
+      {"Int64", VtkType::Int64},     {"UInt64", VtkType::UInt64},   {"Float32", VtkType::Float32},
+      {"Float64", VtkType::Float64},
+  };
+  for (const auto& [n, type] : types)
+    if (n == name) return type;
+  return std::nullopt;
+}
+
+class VtuReader {
+ public:
+  VtuReader(const std::string& name, std::string_view data) : name_(name), data_(data), xml_(name, data) {}
+
+  TetFileContent read() {
+    read_structure();
+    if (pieces_.empty()) fail(name_, "no <Piece> in the <UnstructuredGrid>");
+    for (const Piece& piece : pieces_) read_piece(piece);
+    content_.format = "vtu " + format_name_ + (block_.zlib ? " zlib" : "");
+    return std::move(content_);
+  }
+
+ private:
+  std::uint64_t number_attribute(const XmlTag& tag, std::string_view key, std::uint64_t fallback) const {
+    const std::optional<std::string_view> text = tag.attribute(key);
+    if (!text) return fallback;
+    std::int64_t value = 0;
+    if (!parse_int(*text, value) || value < 0)
+      xml_.fail_at(tag.begin, std::string(key) + "=" + quoted(*text) + " is not a count");
+    return static_cast<std::uint64_t>(value);
+  }
+
+  void read_file_attributes(const XmlTag& tag) {
+    if (tag.name != "VTKFile") xml_.fail_at(tag.begin, "not a VTK XML file (the first tag is <" + std::string(tag.name) + ">)");
+    const std::string_view type = tag.attribute("type").value_or("");
+    if (type != "UnstructuredGrid")
+      xml_.fail_at(tag.begin, "VTKFile type " + quoted(type) + ": only UnstructuredGrid (.vtu) holds tetrahedra");
+    const std::string_view order = tag.attribute("byte_order").value_or("LittleEndian");
+    if (order != "LittleEndian" && order != "BigEndian") xml_.fail_at(tag.begin, "byte_order " + quoted(order));
+    block_.little_endian = order == "LittleEndian";
+    const std::string_view header = tag.attribute("header_type").value_or("UInt32");
+    if (header != "UInt32" && header != "UInt64") xml_.fail_at(tag.begin, "header_type " + quoted(header) + " (UInt32 or UInt64)");
+    block_.header_64 = header == "UInt64";
+    const std::string_view compressor = tag.attribute("compressor").value_or("");
+    if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
+      xml_.fail_at(tag.begin, "compressor " + quoted(compressor) + " is not supported (vtkZLibDataCompressor is)");
+    block_.zlib = !compressor.empty();
+  }
+
+  void add_array(Piece& piece, Container container, const XmlTag& tag) {
+    DataArray array;
+    array.name = tag.attribute("Name").value_or("");
+    array.type = tag.attribute("type").value_or("");
+    array.format = tag.attribute("format").value_or("ascii");
+    array.components = number_attribute(tag, "NumberOfComponents", 1);
+    array.offset = number_attribute(tag, "offset", 0);
+    array.tag_offset = tag.begin;
+    if (!tag.self_closing) array.text = data_.substr(tag.end, data_.find('<', tag.end) - tag.end);
+    if (container == Container::Points) {
+      if (!piece.points) piece.points = array;
+    } else if (container == Container::Cells) {
+      if (array.name == "connectivity") piece.connectivity = array;
+      if (array.name == "offsets") piece.offsets = array;
+      if (array.name == "types") piece.types = array;
+    } else if (container == Container::CellData) {
+      const int rank = region_array_rank(array.name);
+      if (rank >= 0 && (!piece.region || rank < piece.region_rank)) {
+        piece.region = array;
+        piece.region_rank = rank;
+      }
+    }
+  }
+
+  // The tags up to <AppendedData> (after it, raw data may hold anything).
+  void read_structure() {
+    XmlTag tag;
+    if (!xml_.next(0, tag)) fail(name_, "not a VTK XML file (no tags)");
+    read_file_attributes(tag);
+    Container container = Container::None;
+    Piece* piece = nullptr;
+    while (xml_.next(tag.end, tag)) {
+      if (tag.name == "AppendedData" && !tag.closing) {
+        read_appended_start(tag);
+        return;
+      }
+      if (tag.name == "Piece") {
+        if (tag.closing) {
+          piece = nullptr;
+          continue;
+        }
+        pieces_.emplace_back();
+        piece = &pieces_.back();
+        piece->num_points = number_attribute(tag, "NumberOfPoints", 0);
+        piece->num_cells = number_attribute(tag, "NumberOfCells", 0);
+        piece->tag_offset = tag.begin;
+      } else if (tag.name == "Points" || tag.name == "Cells" || tag.name == "CellData" || tag.name == "PointData") {
+        container = tag.closing || tag.self_closing ? Container::None
+                    : tag.name == "Points"          ? Container::Points
+                    : tag.name == "Cells"           ? Container::Cells
+                    : tag.name == "CellData"        ? Container::CellData
+                                                    : Container::Other;
+      } else if (tag.name == "DataArray" && !tag.closing && piece) {
+        add_array(*piece, container, tag);
+      }
+    }
+  }
+
+  void read_appended_start(const XmlTag& tag) {
+    const std::string_view encoding = tag.attribute("encoding").value_or("");
+    if (encoding != "raw" && encoding != "base64")
+      xml_.fail_at(tag.begin, "AppendedData encoding " + quoted(encoding) + " (raw or base64)");
+    const std::size_t underscore = data_.find('_', tag.end);
+    if (underscore == std::string_view::npos) xml_.fail_at(tag.begin, "AppendedData without the '_' that starts the data");
+    appended_base64_ = encoding == "base64";
+    appended_ = data_.substr(underscore + 1);
+    if (appended_base64_) appended_ = appended_.substr(0, appended_.find('<'));
+    has_appended_ = true;
+  }
+
+  // The `count` values of `array`.
+  std::vector<double> decode(const DataArray& array, std::uint64_t count) {
+    const std::string what = "DataArray " + quoted(array.name) + ": ";
+    const std::optional<VtkType> type = vtk_type(array.type);
+    if (!type) xml_.fail_at(array.tag_offset, what + "type " + quoted(array.type) + " is not a number type");
+    try {
+      if (array.format == "ascii") return decode_ascii(array, count);
+      std::string bytes;
+      if (array.format == "binary") {
+        ByteStream in(array.text, /*base64=*/true);
+        bytes = read_block(in, block_);
+      } else if (array.format == "appended") {
+        if (!has_appended_) xml_.fail_at(array.tag_offset, what + "format \"appended\" but the file has no <AppendedData>");
+        if (array.offset > appended_.size())
+          xml_.fail_at(array.tag_offset, what + "offset " + std::to_string(array.offset) + " is past the appended data");
+        ByteStream in(appended_.substr(array.offset), appended_base64_);
+        bytes = read_block(in, block_);
+      } else {
+        xml_.fail_at(array.tag_offset, what + "format " + quoted(array.format) + " (ascii, binary or appended)");
+      }
+      const std::size_t size = size_of(*type);
+      if (bytes.size() % size != 0 || bytes.size() / size != count)
+        throw BadData{std::to_string(bytes.size()) + " bytes of data, but " + std::to_string(count) + " values of " +
+                      std::string(array.type) + " are expected"};
+      note_format(array.format == "appended" ? (appended_base64_ ? "appended base64" : "appended raw") : "binary");
+      return load_values(bytes, *type, count, block_.little_endian);
+    } catch (const BadData& e) {
+      xml_.fail_at(array.tag_offset, what + e.problem);
+    }
+  }
+
+  std::vector<double> decode_ascii(const DataArray& array, std::uint64_t count) {
+    note_format("ascii");
+    std::vector<double> values;
+    values.reserve(capped_count(count, array.text.size(), 2));
+    TextScanner in(array.text);
+    while (in.seek_token()) {
+      const std::string_view token = in.token();
+      double value = 0;
+      if (!parse_double(token, value)) throw BadData{quoted(token) + " is not a number"};
+      if (values.size() == count) throw BadData{"more than the " + std::to_string(count) + " values expected"};
+      values.push_back(value);
+    }
+    if (values.size() != count)
+      throw BadData{std::to_string(values.size()) + " values, but " + std::to_string(count) + " are expected"};
+    return values;
+  }
+
+  void note_format(const char* format) {
+    if (format_name_.empty()) format_name_ = format;
+  }
+
+  const DataArray& required(const std::optional<DataArray>& array, const Piece& piece, const char* what) const {
+    if (!array) xml_.fail_at(piece.tag_offset, std::string("the piece has no ") + what + " array");
+    return *array;
+  }
+
+  void read_piece(const Piece& piece) {
+    const std::size_t first_point = content_.points.size();
+    if (piece.num_points > 0) {
+      const DataArray& points = required(piece.points, piece, "Points");
+      if (points.components != 3)
+        xml_.fail_at(points.tag_offset, "the points have " + std::to_string(points.components) + " components, not 3");
+      if (piece.num_points > std::numeric_limits<std::uint32_t>::max() - first_point)
+        xml_.fail_at(piece.tag_offset, "NumberOfPoints " + std::to_string(piece.num_points) + " is too large");
+      const std::vector<double> xyz = decode(points, 3 * piece.num_points);
+      for (std::size_t p = 0; p < piece.num_points; ++p) content_.points.emplace_back(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]);
+    }
+    if (piece.num_cells == 0) return;
+    VtkCells cells;
+    cells.offsets = decode(required(piece.offsets, piece, "offsets"), piece.num_cells);
+    cells.types = decode(required(piece.types, piece, "types"), piece.num_cells);
+    const double connectivity_size = cells.offsets.back();
+    if (!(connectivity_size >= 0 && connectivity_size <= static_cast<double>(data_.size()) * 8))
+      xml_.fail_at(piece.offsets->tag_offset, "the last offset " + std::to_string(connectivity_size) + " is not a size");
+    cells.connectivity =
+        decode(required(piece.connectivity, piece, "connectivity"), static_cast<std::uint64_t>(connectivity_size));
+    if (piece.region) cells.regions = decode(*piece.region, piece.num_cells);
+    add_vtk_cells(content_, cells, first_point, static_cast<std::size_t>(piece.num_points), name_);
+  }
+
+  const std::string& name_;
+  std::string_view data_;
+  XmlScanner xml_;
+  BlockFormat block_;
+  std::vector<Piece> pieces_;
+  bool has_appended_ = false, appended_base64_ = false;
+  std::string_view appended_;
+  std::string format_name_;
+  TetFileContent content_;
+};
+
+}  // namespace
+
+TetFileContent read_vtu(const std::string& name, std::string_view data) { return VtuReader(name, data).read(); }
+
+}  // namespace meshprep::detail
