@@ -2,6 +2,7 @@
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/fem/solver_targets.h"
 #include "meshprep/quality/number_format.h"
 
 #include <algorithm>
@@ -61,9 +62,52 @@ void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags) {
       ->check(CLI::Range(std::size_t{0}, std::size_t{1000000000}));
 }
 
-void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks) {
-  for (const ThresholdCheck& c : checks)
-    if (!c.ok) std::cerr << "meshprep: " << input << ": not FEM-ready: " << describe(c) << '\n';
+TetExportOptions tet_export_options(const std::string& output, const std::string& target, const std::string& msh_version,
+                                    bool binary) {
+  if (!target.empty()) {
+    const SolverTarget& t = find_solver_target(target);
+    if (extension_of(output) != t.extension.substr(1))
+      throw InvalidInput(output + ": target " + t.name + " reads " + t.extension + " files");
+    return t.options;
+  }
+  TetExportOptions options;
+  options.msh_version = msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+  options.binary = binary;
+  return options;
+}
+
+ImproveParams ImproveFlags::applied_to(ImproveParams params) const {
+  if (goal_min_dihedral_deg) params.goal_min_dihedral_deg = *goal_min_dihedral_deg;
+  if (goal_max_dihedral_deg) params.goal_max_dihedral_deg = *goal_max_dihedral_deg;
+  if (time_limit_seconds) params.time_limit_seconds = *time_limit_seconds;
+  return params;
+}
+
+void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off) {
+  const ImproveParams defaults;
+  const auto text = [](double v) { return format_number(v, 6); };
+  if (can_switch_off)
+    cmd.add_flag("--no-improve", flags.off, "Keep TetGen's tets as they are (no flips, smoothing or new inner vertices)");
+  cmd.add_option("--goal-min-dihedral", flags.goal_min_dihedral_deg,
+                 "Improve the tets with a dihedral angle under DEG (default " + text(defaults.goal_min_dihedral_deg) + ")")
+      ->check(CLI::Range(1.0, 59.0));
+  cmd.add_option("--goal-max-dihedral", flags.goal_max_dihedral_deg,
+                 "... and those with one over DEG (default " + text(defaults.goal_max_dihedral_deg) + ")")
+      ->check(CLI::Range(61.0, 179.0));
+  cmd.add_option("--improve-time-limit", flags.time_limit_seconds,
+                 "Stop improving after SECONDS, keeping the tets so far (default: no limit)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks,
+                             const ImproveResult* improvement) {
+  for (const ThresholdCheck& c : checks) {
+    if (c.ok) continue;
+    std::cerr << "meshprep: " << input << ": not FEM-ready: " << describe(c);
+    const std::string limit =
+        c.check == "min_dihedral_deg" && improvement ? surface_limit_note(*improvement, c.threshold) : "";
+    std::cerr << (limit.empty() ? "" : "; " + limit) << '\n';
+  }
 }
 
 std::string failed_names(const TetVerdict& verdict) {

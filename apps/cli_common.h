@@ -2,7 +2,9 @@
 // Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
 
 #include "meshprep/core/io.h"
+#include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_verdict.h"
+#include "meshprep/fem/improve_tets.h"
 #include "meshprep/quality/report.h"
 
 #include <CLI/CLI.hpp>
@@ -56,8 +58,28 @@ struct ThresholdFlags {
 /// bound to `flags`; the help gives TetThresholds' defaults.
 void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags);
 
-/// Prints "meshprep: INPUT: not FEM-ready: <describe(check)>" to stderr for every failed check.
-void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks);
+/// How to write the tets to `output`: a solver target's options (target not empty; its extension
+/// must be output's), else the .msh version ("4.1" or "2.2") and binary flag.
+/// \throws InvalidInput for an unknown target or an output of another extension.
+TetExportOptions tet_export_options(const std::string& output, const std::string& target, const std::string& msh_version,
+                                    bool binary);
+
+/// The improvement's flags, each set only when given (the defaults stay ImproveParams').
+struct ImproveFlags {
+  bool off = false;  ///< --no-improve
+  std::optional<double> goal_min_dihedral_deg, goal_max_dihedral_deg, time_limit_seconds;
+  /// `params` with the flags that were given.
+  ImproveParams applied_to(ImproveParams params) const;
+};
+
+/// Registers --goal-min-dihedral, --goal-max-dihedral and --improve-time-limit on `cmd`, and
+/// --no-improve when `can_switch_off`, bound to `flags`; the help gives ImproveParams' defaults.
+void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off);
+
+/// Prints "meshprep: INPUT: not FEM-ready: <describe(check)>" to stderr for every failed check,
+/// with what the surface allows (surface_limit_note) when `improvement` says it forbids the check.
+void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks,
+                             const ImproveResult* improvement = nullptr);
 
 /// The names of the failed checks, comma-separated: "min_dihedral_deg, max_dihedral_deg".
 std::string failed_names(const TetVerdict& verdict);
@@ -84,5 +106,6 @@ Action add_reconstruct_command(CLI::App& app);
 Action add_smooth_command(CLI::App& app);
 Action add_enhance_command(CLI::App& app);
 Action add_pipeline_command(CLI::App& app);
+Action add_improve_command(CLI::App& app);
 
 }  // namespace meshprep::cli

@@ -1,10 +1,12 @@
 // meshprep tetrahedralize SURFACE -o OUT [--radius-edge R] [--min-dihedral DEG]
 //   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary]
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
-//   [--fem-check] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
+//   [--fem-check] [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
+//   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--timeout SECONDS] [--threads N] [--json FILE|-]
 #include "cli_common.h"
 #include "interrupt.h"
+#include "tet_improvement.h"
 
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
@@ -30,6 +32,7 @@ struct TetOptions {
   std::string input, output, json, target, diagnose, msh_version = "4.1";
   TetParams params;
   ThresholdFlags thresholds;
+  ImproveFlags improve;
   double extrude_depth = 0, extrude_relative = 0;
   bool binary = false, fem_check = false;
   unsigned timeout = 0;
@@ -40,18 +43,6 @@ void progress(const std::string& line) {
   if (::isatty(STDERR_FILENO)) std::cerr << "meshprep: " << line << '\n';
 }
 
-TetExportOptions export_options(const TetOptions& o) {
-  if (!o.target.empty()) {
-    const SolverTarget& target = find_solver_target(o.target);
-    if (extension_of(o.output) != target.extension.substr(1))
-      throw InvalidInput(o.output + ": target " + target.name + " reads " + target.extension + " files");
-    return target.options;
-  }
-  TetExportOptions options;
-  options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
-  options.binary = o.binary;
-  return options;
-}
 
 // The surface as a PLC: either closed and FEM-ready (checked), or an open height field extruded.
 SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohmann::ordered_json& json) {
@@ -97,7 +88,7 @@ int run_tetrahedralize(const TetOptions& o) {
   ensure_not_input(o.output, o.input);
   ensure_not_input(o.json, o.input);
   ensure_not_input(o.diagnose, o.input);
-  const TetExportOptions options = export_options(o);
+  const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
   const TriangleSoup soup = read_soup(o.input);
   nlohmann::ordered_json json;
   json["input"] = o.input;
@@ -128,6 +119,15 @@ int run_tetrahedralize(const TetOptions& o) {
   if (stop_requested()) throw stopped();  // TetGen had just finished
   arm_timeout(0);  // from here on the outputs are written whole
   json["tetgen_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::optional<ImproveResult> improvement;
+  if (!o.improve.off) {
+    json["tetgen_quality"] = to_json(analyze_tet_quality(tets));
+    try {
+      improvement = run_improvement(tets, o.improve.applied_to({}), json);
+    } catch (const Cancelled&) {
+      throw stopped();
+    }
+  }
   const TetQualityReport quality = analyze_tet_quality(tets);
   const TetVerdict verdict = judge_tets(quality, o.thresholds.applied_to({}));
   json["tet_quality"] = to_json(quality);
@@ -144,6 +144,7 @@ int run_tetrahedralize(const TetOptions& o) {
               << " points, volume " << quality.volume << "\n  min dihedral " << quality.min_dihedral_deg.min
               << " deg, tets under 10 deg " << 100 * quality.tets_min_dihedral_below_10 << " %, radius-edge max "
               << quality.radius_edge_ratio.max << ", scaled Jacobian min " << quality.scaled_jacobian.min << '\n';
+    if (improvement) std::cout << "  improved: " << improvement_summary(*improvement) << '\n';
     if (verdict.ok()) std::cout << "  FEM-ready: every threshold holds\n";
     if (o.fem_check) {
       const auto& f = json["fem_check"];
@@ -152,7 +153,7 @@ int run_tetrahedralize(const TetOptions& o) {
     }
   }
   if (verdict.ok()) return kSuccess;
-  print_failed_thresholds(o.input, verdict.checks);
+  print_failed_thresholds(o.input, verdict.checks, improvement ? &*improvement : nullptr);
   throw WorkFailed(o.input + ": not FEM-ready: the tets fail " + failed_names(verdict) + " (above); " + o.output +
                    " is written");
 }
@@ -191,6 +192,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
       ->check(CLI::Range(1e-9, 100.0))
       ->excludes(depth);
   cmd->add_flag("--fem-check", o->fem_check, "Solve a P1 Poisson problem with a known solution on the tets and report errors");
+  add_improve_options(*cmd, o->improve, /*can_switch_off=*/true);
   add_threshold_options(*cmd, o->thresholds);
   cmd->add_option("--timeout", o->timeout,
                   "Stop TetGen after this many seconds (exit 1, nothing written); Ctrl-C stops it too (exit 130)")

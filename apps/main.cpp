@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   add(cli::add_smooth_command);
   add(cli::add_enhance_command);
   add(cli::add_tetrahedralize_command);
+  add(cli::add_improve_command);
   add(cli::add_pipeline_command);
   CLI::App* help = app.add_subcommand("help", "Show this help");
 

@@ -102,6 +102,19 @@ void write_distributions(std::ostream& out, const std::vector<std::pair<std::str
   out << std::left;
 }
 
+// The worst tets (tet_quality's worst_tets), one line each: where to look in a viewer.
+void write_worst_tets(std::ostream& out, const Json& worst) {
+  if (worst.empty()) return;
+  out << "Worst tets (smallest dihedral first): index, centre, min / max dihedral (deg), radius-edge, scaled Jacobian\n";
+  for (const Json& t : worst) {
+    const Json& c = t["centre"];
+    out << "  " << t["index"].dump() << "  (" << value_text("x", c[0]) << ", " << value_text("y", c[1]) << ", "
+        << value_text("z", c[2]) << ")  " << value_text("min", t["min_dihedral_deg"]) << " / "
+        << value_text("max", t["max_dihedral_deg"]) << "  " << value_text("r", t["radius_edge_ratio"]) << "  "
+        << value_text("j", t["scaled_jacobian"]) << '\n';
+  }
+}
+
 }  // namespace
 
 Json tet_mesh_report(const TetMesh& mesh, const TetReadReport& read) {
@@ -131,6 +144,7 @@ void write_tet_summary(std::ostream& out, const Json& report) {
   Rows counts, boundary;
   std::vector<std::pair<std::string, const Json*>> distributions;
   for (const auto& [key, value] : report["tet_quality"].items()) {
+    if (value.is_array()) continue;  // the worst tets: a table of their own
     if (is_distribution(value))
       distributions.emplace_back(label_of(key), &value);
     else
@@ -145,6 +159,7 @@ void write_tet_summary(std::ostream& out, const Json& report) {
       << report["input"]["format"].get<std::string>() << ")\n";
   write_rows(out, counts, width);
   write_distributions(out, distributions);
+  if (report["tet_quality"].contains("worst_tets")) write_worst_tets(out, report["tet_quality"]["worst_tets"]);
   out << "Boundary (the faces of one tet)\n";
   write_rows(out, boundary, width);
 }

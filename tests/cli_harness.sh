@@ -10,6 +10,8 @@ expect_exit() { [ "$2" = "$3" ] && ok || bad "$1: exit $3, expected $2"; }
 # Whether err.txt has the two lines of the verdict on cli_meshes.py's 2-degree sliver (one per
 # failed threshold, figure against threshold).
 has_sliver_verdict() {
-  grep -qx "meshprep: sliver.off: not FEM-ready: smallest dihedral angle 2.005 deg < 10 deg (min_dihedral_deg)" err.txt &&
+  # The tet is the whole solid: each of its edges is a boundary edge of interior angle 2.005 or
+  # 177.2 degrees, and the four sharp ones cap any tets of this surface (the improvement says so).
+  grep -qx "meshprep: sliver.off: not FEM-ready: smallest dihedral angle 2.005 deg < 10 deg (min_dihedral_deg); the surface itself allows at most 2.005 deg: 4 boundary edge(s) too sharp, the first at (0, 0.5, 0.00875) with an interior angle of 2.005 deg" err.txt &&
     grep -qx "meshprep: sliver.off: not FEM-ready: largest dihedral angle 177.2 deg > 165 deg (max_dihedral_deg)" err.txt
 }

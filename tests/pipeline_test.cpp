@@ -92,14 +92,21 @@ TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
   PipelineConfig config = small_config();
   config.simplify.ratio = 0.5;
   const PipelineResult r = run_pipeline(mesh_file(test::icosphere(3), "sphere.off"), config);
-  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
+  EXPECT_EQ(stage_names(r),
+            (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"}));
   EXPECT_FALSE(r.from_points);
   EXPECT_TRUE(r.stages[1].ran);
   EXPECT_FALSE(r.stages[2].ran);  // smoothing is off by default
   EXPECT_NEAR(static_cast<double>(r.final_quality.faces), 640.0, 640 * 0.02);  // the target +-1 %, enhance +-1 %
-  // TetGen alone leaves an 8.4-degree sliver here (issue 29): the verdict says so.
+  // TetGen alone leaves an 8.4-degree sliver here (issue 29); the improvement reaches its goal.
+  ASSERT_TRUE(r.tetgen_quality && r.improvement);
+  EXPECT_LT(r.tetgen_quality->min_dihedral_deg.min, 10);
+  EXPECT_EQ(r.improvement->stopped_by, "goal reached");
   expect_verdict_follows_the_figures(r);
   ASSERT_TRUE(r.tet_quality && r.final_quality.volume);
+  EXPECT_GE(r.tet_quality->min_dihedral_deg.min, 15);
+  EXPECT_LE(r.tet_quality->max_dihedral_deg.max, 160);
+  EXPECT_TRUE(r.fem.ready);
   // TetGen fills the closed polyhedron and, by default on a closed surface (keep_surface "auto"),
   // keeps its triangles (-Y): the tets' boundary is the final surface, face for face, and their
   // volume is its volume to round-off.
@@ -119,7 +126,8 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
   PipelineConfig config = small_config();
   config.tetrahedralize.keep_surface = true;  // not the default for a block: its walls are thin
   const PipelineResult r = run_pipeline(terrain_points(), config);
-  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
+  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "simplify", "smooth", "enhance", "quality",
+                                                      "tetrahedralize", "improve"}));
   EXPECT_TRUE(r.from_points);
   EXPECT_EQ(r.input_points, 1500u);
   // The automatic ratio for a terrain keeps 7 % of the faces.
@@ -216,7 +224,10 @@ TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
   EXPECT_EQ(summary["thresholds"][0]["check"], "min_dihedral_deg");
   EXPECT_EQ(summary["thresholds"][0]["value"], r.tet_quality->min_dihedral_deg.min);
   EXPECT_EQ(summary["tets"]["tet_quality"]["worst_tets"].size(), kDefaultWorstTets);
-  EXPECT_EQ(summary["stages"].size(), 6u);
+  EXPECT_EQ(summary["stages"].size(), 7u);
+  // TetGen's tets beside the improved ones, and what the improvement did.
+  EXPECT_EQ(summary["tets"]["tetgen_quality"]["tetrahedra"], r.tetgen_quality->tetrahedra);
+  EXPECT_EQ(summary["tets"]["improvement"]["stopped_by"], r.improvement->stopped_by);
   EXPECT_EQ(summary["quality"]["faces"], r.surface.triangles.size());
 
   // Another format replaces the tets; no tets at all removes them.
@@ -239,9 +250,14 @@ TEST_F(Pipeline, OneSliverIsNotFemReadyAndTheFilesSaySo) {
   ASSERT_TRUE(r.tets && r.tet_quality);
   ASSERT_EQ(r.tet_quality->tetrahedra, 1u);
   EXPECT_FALSE(r.fem.ready);
-  // Both angle thresholds fail, with their figures; no tet is inverted.
-  EXPECT_EQ(r.fem.problems, (std::vector<std::string>{"smallest dihedral angle 2.005 deg < 10 deg (min_dihedral_deg)",
-                                                       "largest dihedral angle 177.2 deg > 165 deg (max_dihedral_deg)"}));
+  // Both angle thresholds fail, with their figures and, for the smallest, why no tets of this
+  // surface can pass (the tet is the whole solid; its four sharp edges are boundary edges); no tet
+  // is inverted.
+  EXPECT_EQ(r.fem.problems,
+            (std::vector<std::string>{"smallest dihedral angle 2.005 deg < 10 deg (min_dihedral_deg); the surface itself "
+                                      "allows at most 2.005 deg: 4 boundary edge(s) too sharp, the first at (0, 0.5, "
+                                      "0.00875) with an interior angle of 2.005 deg",
+                                      "largest dihedral angle 177.2 deg > 165 deg (max_dihedral_deg)"}));
   ASSERT_EQ(r.fem.checks.size(), 3u);
   EXPECT_NEAR(r.fem.checks[0].value, 2.0048, 1e-4);
   EXPECT_TRUE(r.fem.checks[2].ok);
@@ -288,7 +304,8 @@ TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {
   observer.stage_finished = [&](const StageRecord& s) { finished.push_back(s.name); };
   run_pipeline(mesh_file(test::icosphere(2), "sphere.off"), config, observer);
   EXPECT_EQ(started, (std::vector<std::string>{"check", "enhance", "quality"}));  // the others are skipped
-  EXPECT_EQ(finished, (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize"}));
+  EXPECT_EQ(finished,
+            (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"}));
 }
 
 }  // namespace

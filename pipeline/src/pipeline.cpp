@@ -3,6 +3,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/fem/extrude.h"
+#include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/enhance.h"
 #include "meshprep/preprocess/reconstruct.h"
@@ -55,6 +56,7 @@ class Run {
     enhance_stage();
     quality_stage();
     tetrahedralize_stage();
+    improve_stage();
     deliver_verdict();  // judges the final tets: a stage that changes them goes before it
     result_.seconds = seconds_since(start);
     return std::move(result_);
@@ -333,11 +335,42 @@ class Run {
 
   // The verdict on the final tets (result_.tets, described by result_.tet_quality): FEM-ready when
   // they exist and meet every threshold of the configuration's verdict section.
+  void improve_stage() {
+    if (!config_.improve.enabled) return skip("improve", "switched off");
+    if (!result_.tets) return skip("improve", "no tets to improve");
+    StageRecord record = started("improve");
+    record.faces_before = record.faces_after = result_.surface.triangles.size();
+    fill_shape(record, result_.final_quality);
+    ImproveParams params = config_.improve.params;
+    params.progress = progress();
+    params.cancelled = observer_.cancelled;
+    const ImproveResult r = improve_tets(*result_.tets, params);
+    record.seconds = r.seconds;
+    record.details = to_json(r);
+    if (r.passes > 0) {
+      result_.tetgen_quality = std::move(result_.tet_quality);
+      result_.tet_quality = analyze_tet_quality(*result_.tets);
+    }
+    record.note = "smallest dihedral " + figure(r.min_dihedral_before_deg) + " -> " + figure(r.min_dihedral_after_deg) +
+                  " deg, largest " + figure(r.max_dihedral_before_deg) + " -> " + figure(r.max_dihedral_after_deg) +
+                  " deg (" + r.stopped_by + ")";
+    const std::string limit = surface_limit_note(r, params.goal_min_dihedral_deg);
+    if (!limit.empty()) record.note += "; " + limit;
+    result_.improvement = r;
+    finish(std::move(record));
+  }
+
   void deliver_verdict() {
     if (result_.tet_quality) {
       const TetVerdict verdict = judge_tets(*result_.tet_quality, config_.verdict);
       result_.fem.checks = verdict.checks;
-      for (const ThresholdCheck& c : verdict.failed()) result_.fem.problems.push_back(describe(c));
+      for (const ThresholdCheck& c : verdict.failed()) {
+        std::string problem = describe(c);
+        // Why the smallest angle cannot pass with this surface, if it cannot.
+        const std::string limit =
+            c.check == "min_dihedral_deg" && result_.improvement ? surface_limit_note(*result_.improvement, c.threshold) : "";
+        result_.fem.problems.push_back(limit.empty() ? problem : problem + "; " + limit);
+      }
     }
     result_.fem.ready = result_.tets.has_value() && result_.fem.problems.empty();
   }

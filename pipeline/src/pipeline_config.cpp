@@ -289,6 +289,22 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
   return keys;
 }
 
+std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
+  ImproveParams& p = i.params;
+  std::vector<Key> keys;
+  keys.push_back(flag("improve", "enabled", i.enabled,
+                      "improve TetGen's tets (flips, smoothing, new inner vertices; the boundary is kept exactly)"));
+  keys.push_back(number("improve", "goal_min_dihedral_deg", p.goal_min_dihedral_deg, 0, 59, true,
+                        "the tets with a smaller dihedral angle (degrees) are improved"));
+  keys.push_back(number("improve", "goal_max_dihedral_deg", p.goal_max_dihedral_deg, 60, 179, true,
+                        "... and those with a larger one (degrees)"));
+  keys.push_back(flag("improve", "insertion", p.insertion, "insert inner vertices where flips and smoothing are stuck"));
+  keys.push_back(count("improve", "max_passes", p.max_passes, 1, 1000, "passes over the tets below the goal, at most"));
+  keys.push_back(number("improve", "time_limit_seconds", p.time_limit_seconds, 0, INFINITY, false,
+                        "stop improving after this many seconds (the tets so far are kept); 0 = no limit"));
+  return keys;
+}
+
 std::vector<Key> verdict_keys(TetThresholds& t) {
   std::vector<Key> keys;
   keys.push_back(number("verdict", "min_dihedral_deg", t.min_dihedral_deg, 0, 180, false,
@@ -304,7 +320,7 @@ std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c
   return {{"reconstruct", reconstruct_keys(c.reconstruct)}, {"simplify", simplify_keys(c.simplify)},
           {"smooth", smooth_keys(c.smooth)},                {"enhance", enhance_keys(c.enhance)},
           {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
-          {"verdict", verdict_keys(c.verdict)}};
+          {"improve", improve_keys(c.improve)},             {"verdict", verdict_keys(c.verdict)}};
 }
 
 constexpr const char* kRunSection = "run";  // provenance written into pipeline.json, ignored on read

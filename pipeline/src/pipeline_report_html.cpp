@@ -127,6 +127,38 @@ std::string worst_tets_table(const TetQualityReport& q) {
   return out + "</table>\n";
 }
 
+// What the improvement did to TetGen's tets, and the boundary edges where the surface itself caps
+// the smallest dihedral angle (improve_tets.h), with their places.
+std::string improvement_tables(const PipelineResult& r) {
+  if (!r.improvement) return {};
+  const ImproveResult& i = *r.improvement;
+  std::string out = "<table>\n<caption>Improvement of TetGen's tets</caption>\n" + row({"", "TetGen", "improved"}, "th");
+  out += row({"smallest dihedral", degrees(i.min_dihedral_before_deg), degrees(i.min_dihedral_after_deg)});
+  out += row({"largest dihedral", degrees(i.max_dihedral_before_deg), degrees(i.max_dihedral_after_deg)});
+  out += row({"tets below the goal", std::to_string(i.below_goal_before), std::to_string(i.below_goal_after)});
+  out += row({"tets", std::to_string(i.tets_before), std::to_string(i.tets_after)});
+  out += "</table>\n<table>\n";
+  out += row({"edge / multi-face removals", std::to_string(i.edge_removals) + " / " + std::to_string(i.multi_face_removals)});
+  out += row({"vertex moves / contractions", std::to_string(i.vertex_moves) + " / " + std::to_string(i.contractions)});
+  out += row({"new inner vertices", std::to_string(i.inserted_vertices)});
+  out += row({"passes, stopped by", std::to_string(i.passes) + ", " + i.stopped_by});
+  out += row({"time", format_fixed(i.seconds, 2) + " s"});
+  out += "</table>\n";
+  if (i.limiting_edges.empty()) return out;
+  out += "<table>\n<caption>Where the surface forbids the goal: " + std::to_string(i.limiting_edge_count) +
+         " boundary edge(s); no tets with this boundary do better than the bound</caption>\n" +
+         row({"midpoint x", "midpoint y", "midpoint z", "interior angle", "bound"}, "th");
+  for (std::size_t k = 0; k < i.limiting_edges.size() && k < 10; ++k) {
+    const LimitingBoundaryEdge& e = i.limiting_edges[k];
+    out += "<tr>";
+    for (const std::string& cell : {format_number(e.midpoint.x(), 6), format_number(e.midpoint.y(), 6),
+                                    format_number(e.midpoint.z(), 6), degrees(e.interior_angle_deg), degrees(e.bound_deg)})
+      out += "<td class=\"num\">" + escape(cell) + "</td>";
+    out += "</tr>\n";
+  }
+  return out + "</table>\n";
+}
+
 // Per-tet histograms share a log count axis: the few tets that decide the verdict show beside
 // the bulk.
 html::HistogramOptions tet_histogram(const std::string& title, const std::string& x_label, double lo, double hi) {
@@ -156,8 +188,8 @@ std::string tet_section(const PipelineResult& r, const PipelineConfig& config) {
   out += row({"aspect ratio p95 / max", figure(q.aspect_ratio.p95) + " / " + figure(q.aspect_ratio.max)});
   out += row({"TetGen switches", r.tetgen_switches});
   out += row({"file", "tets." + config.tetrahedralize.format});
-  out += "</table>\n" + threshold_table(r) + "</div>\n<div class=\"tables\">\n" + worst_tets_table(q) +
-         "</div>\n<div class=\"histograms\">\n";
+  out += "</table>\n" + threshold_table(r) + "</div>\n<div class=\"tables\">\n" + improvement_tables(r) +
+         "</div>\n<div class=\"tables\">\n" + worst_tets_table(q) + "</div>\n<div class=\"histograms\">\n";
   html::HistogramOptions dihedral = tet_histogram("Smallest dihedral angle per tet", "degrees", 0, 90);
   dihedral.bins = 45;
   dihedral.markers = html::percentile_markers(q.min_dihedral_deg);

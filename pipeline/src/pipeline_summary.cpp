@@ -59,6 +59,9 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   tets["switches"] = result.tetgen_switches.empty() ? Json(nullptr) : Json(result.tetgen_switches);
   tets["readiness"] = result.readiness ? to_json(*result.readiness) : Json(nullptr);
   tets["tet_quality"] = result.tet_quality ? to_json(*result.tet_quality) : Json(nullptr);
+  // TetGen's own tets beside the final ones, and what the improvement did and found the surface forbids.
+  tets["tetgen_quality"] = result.tetgen_quality ? to_json(*result.tetgen_quality) : Json(nullptr);
+  tets["improvement"] = result.improvement ? to_json(*result.improvement) : Json(nullptr);
   json["tets"] = tets;
   json["time_seconds"] = result.seconds;
   return json;

@@ -12,7 +12,9 @@
 #include "vertex_smoothing.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/origin_shift.h"
 #include "meshprep/fem/tet_quality.h"
+#include "meshprep/quality/number_format.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -314,8 +316,21 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   result.max_dihedral_before_deg = before.max;
   const double obtuse_weight = std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree) /
                                std::sin((180.0 - params.goal_max_dihedral_deg) * kRadiansPerDegree);
-  TetComplex complex(mesh, obtuse_weight);
+  // Far from the origin (a part placed at 1e9) the objective's products lose the shape's bits:
+  // work next to it. The shift is exact both ways, so unmoved points come back bit for bit.
+  const Vec3 shift = origin_shift(mesh.points);
+  TetMesh moved;
+  if (!shift.isZero()) {
+    moved.points = mesh.points;
+    for (Vec3& p : moved.points) p -= shift;
+    moved.tets = mesh.tets;
+    moved.tet_regions = mesh.tet_regions;
+    moved.boundary_faces = mesh.boundary_faces;
+    moved.boundary_tags = mesh.boundary_tags;
+  }
+  TetComplex complex(shift.isZero() ? mesh : moved, obtuse_weight);
   std::vector<LimitingBoundaryEdge> limiting = limiting_boundary_edges(complex, params.goal_min_dihedral_deg);
+  for (LimitingBoundaryEdge& e : limiting) e.midpoint += shift;
   result.limiting_edge_count = limiting.size();
   result.surface_bound_deg = limiting.empty() ? params.goal_min_dihedral_deg : limiting.front().bound_deg;
   if (limiting.size() > kListedLimitingEdges) limiting.resize(kListedLimitingEdges);
@@ -324,13 +339,26 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   Schedule schedule(complex, params, result);
   schedule.run();
   result.below_goal_after = schedule.below_goal();
-  if (result.passes > 0) mesh = complex.to_mesh(mesh);
+  if (result.passes > 0) {
+    mesh = complex.to_mesh(mesh);
+    for (Vec3& p : mesh.points) p += shift;
+  }
   result.tets_after = mesh.tets.size();
   const DihedralRange after = dihedral_range(mesh);
   result.min_dihedral_after_deg = after.min;
   result.max_dihedral_after_deg = after.max;
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
+}
+
+std::string surface_limit_note(const ImproveResult& r, double threshold_deg) {
+  if (r.limiting_edges.empty() || r.surface_bound_deg >= threshold_deg) return {};
+  const LimitingBoundaryEdge& e = r.limiting_edges.front();
+  const auto number = [](double v) { return format_number(v, 4); };
+  return "the surface itself allows at most " + number(r.surface_bound_deg) + " deg: " +
+         std::to_string(r.limiting_edge_count) + " boundary edge(s) too sharp, the first at (" + number(e.midpoint.x()) +
+         ", " + number(e.midpoint.y()) + ", " + number(e.midpoint.z()) + ") with an interior angle of " +
+         number(e.interior_angle_deg) + " deg";
 }
 
 nlohmann::ordered_json to_json(const ImproveResult& r) {

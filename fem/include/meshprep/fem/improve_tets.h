@@ -91,6 +91,11 @@ struct ImproveResult {
 ///         (the mesh is then unchanged).
 ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params = {});
 
+/// "the surface itself allows at most 8.01 deg: 1 boundary edge too sharp, the first at (x, y, z)
+/// with an interior angle of 16 deg" when the surface caps the smallest dihedral angle below
+/// `threshold_deg`; empty otherwise.
+std::string surface_limit_note(const ImproveResult& result, double threshold_deg);
+
 /// The figures, for reports: keys as the struct's members.
 nlohmann::ordered_json to_json(const ImproveResult& result);
 

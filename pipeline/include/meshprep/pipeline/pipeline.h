@@ -3,8 +3,8 @@
 /// From raw input to an FEM-ready tetrahedral mesh and its report, in one call (the stages of
 /// the paper, chained):
 /// - points (.xyz): reconstruct -> simplify -> smooth -> enhance -> quality -> tetrahedralize (the
-///   terrain closed into a block);
-/// - a surface mesh: check -> simplify -> smooth -> enhance -> quality -> tetrahedralize.
+///   terrain closed into a block) -> improve;
+/// - a surface mesh: check -> simplify -> smooth -> enhance -> quality -> tetrahedralize -> improve.
 ///
 /// Every stage is measured against the pipeline's input surface (the mesh read, or the
 /// reconstruction): faces, Hausdorff distance, volume change, triangle shape, time. A stage that
@@ -13,6 +13,7 @@
 
 #include "meshprep/core/mesh.h"
 #include "meshprep/fem/fem_verdict.h"
+#include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/tet_mesh.h"
 #include "meshprep/fem/tet_quality.h"
@@ -30,7 +31,7 @@ namespace meshprep {
 
 /// What one stage did, measured on its output against the pipeline's input surface.
 struct StageRecord {
-  std::string name;            ///< reconstruct, check, simplify, smooth, enhance, quality, tetrahedralize
+  std::string name;            ///< reconstruct, check, simplify, smooth, enhance, quality, tetrahedralize, improve
   bool ran = false;            ///< false: switched off or nothing to do (see note)
   std::string note;            ///< one line: why it was skipped, or what it found
   double seconds = 0;          ///< the stage's own work (not the measurement)
@@ -64,7 +65,9 @@ struct PipelineResult {
   QualityReport final_quality;   ///< of surface, against input_surface
   std::vector<StageRecord> stages;
   std::optional<TetMesh> tets;                 ///< the final tets
-  std::optional<TetQualityReport> tet_quality;  ///< of `tets`: what the verdict judges
+  std::optional<TetQualityReport> tet_quality;  ///< of the final tets (improved, when the stage ran)
+  std::optional<TetQualityReport> tetgen_quality;  ///< of TetGen's own tets, when the improvement changed them
+  std::optional<ImproveResult> improvement;  ///< of `tets`: what the verdict judges
   std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)
   std::optional<double> extrusion_depth;  ///< an open surface closed into a block: its base's depth
   std::string tetgen_switches;

@@ -5,13 +5,14 @@
 /// tetrahedralize.h) except where a field says otherwise; docs/pipeline.md lists every key.
 ///
 /// The file is one JSON object of sections ("reconstruct", "simplify", "smooth", "enhance",
-/// "quality", "tetrahedralize", "verdict"), each an object of keys; any subset may be given. A section "run"
+/// "quality", "tetrahedralize", "improve", "verdict"), each an object of keys; any subset may be given. A section "run"
 /// (what meshprep wrote into pipeline.json about the run: input, versions) is ignored, so a
 /// pipeline.json replays its run. Unknown sections and keys are rejected with the list of valid
 /// ones, and every value is checked for its type and range.
 
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_verdict.h"
+#include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/enhance.h"
 #include "meshprep/preprocess/reconstruct.h"
@@ -98,6 +99,11 @@ struct PipelineConfig {
     std::string format = "msh";  ///< msh, vtu, mesh, inp or node: the file tets.<format>
     TetExportOptions export_options;
   } tetrahedralize;
+  struct Improve {
+    /// On by default: TetGen's tets keep slivers whatever its switches (improve_tets.h).
+    bool enabled = true;
+    ImproveParams params;  ///< goals, moves, pass and time limits
+  } improve;
   /// What the final tets must meet to be FEM-ready (fem_verdict.h). A section of its own, not keys
   /// of "tetrahedralize": it judges the tets whichever stage made them last, and
   /// tetrahedralize.min_dihedral_deg is already TetGen's -q target, a wish, not a check.
