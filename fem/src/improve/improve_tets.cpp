@@ -41,6 +41,12 @@ constexpr std::size_t kMaxRing = 10;
 constexpr std::size_t kMaxSandwichedFaces = 12;
 // Vertex insertion grows its cavity to at most this many tets.
 constexpr std::size_t kMaxCavity = 24;
+// When stuck, the tets near the stuck ones are worked on towards a goal this many degrees higher
+// (twice as high the second time), then the goal is tried again.
+constexpr int kEscalations = 2;
+constexpr double kEscalationDeg = 5;
+constexpr std::size_t kEscalatedPasses = 2;
+constexpr int kEscalationRings = 2;  // the stuck tets' corners, their neighbours and theirs
 // Compound moves try the best few candidates of the topological moves (each costs a smoothing).
 constexpr std::size_t kCompoundCandidates = 2;
 // A pass tries at most this many tets per tet below the goal at its start: moves that each gain a
@@ -82,7 +88,11 @@ DihedralRange dihedral_range(const TetMesh& mesh) {
 class Schedule {
  public:
   Schedule(TetComplex& mesh, const ImproveParams& params, ImproveResult& result)
-      : mesh_(mesh), params_(params), result_(result), goal_(std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree)) {}
+      : mesh_(mesh),
+        params_(params),
+        result_(result),
+        goal_(std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree)),
+        work_goal_(goal_) {}
 
   std::size_t below_goal() const {
     std::size_t n = 0;
@@ -104,35 +114,78 @@ class Schedule {
       result_.stopped_by = "nothing to do";
       return;
     }
-    std::size_t below = result_.below_goal_before;
+    result_.stopped_by = run_passes(start);
+    for (int round = 1; round <= kEscalations && result_.stopped_by == "no gain"; ++round) {
+      // Stuck: work on the stuck tets' surroundings towards a higher goal, which may free room the
+      // hill climbing at the goal cannot find, then go back to the goal. The detour may also end
+      // in a worse local optimum: then the mesh is taken back to where it was.
+      const TetComplex before_detour = mesh_;
+      const ImproveResult result_before = result_;
+      const std::size_t below = below_goal();
+      const double worst_before = worst();
+      escalate(kEscalationDeg * round);
+      run_passes(start, kEscalatedPasses);
+      deescalate();
+      const std::string stopped_by = run_passes(start);
+      const double worst_after = worst();
+      if (worst_after < worst_before || (worst_after == worst_before && below_goal() >= below)) {
+        const std::size_t passes = result_.passes;
+        mesh_ = before_detour;
+        result_ = result_before;
+        result_.passes = passes;
+        failed_.clear();
+        return;
+      }
+      result_.stopped_by = stopped_by;
+    }
+  }
+
+
+ private:
+  // Passes until the goal is reached, a pass gains nothing, or the limits: the reason.
+  std::string run_passes(Clock::time_point start, std::size_t at_most = ~std::size_t(0)) {
+    std::size_t below = below_goal();
     double worst_now = worst();
-    for (std::size_t pass = 0; pass < params_.max_passes; ++pass) {
-      if (!may_go_on(start)) {
-        result_.stopped_by = "time limit";
-        return;
-      }
+    for (std::size_t pass = 0; pass < at_most && result_.passes < params_.max_passes; ++pass) {
+      if (!may_go_on(start)) return "time limit";
       ++result_.passes;
-      if (!run_pass(start)) {
-        result_.stopped_by = "time limit";
-        return;
-      }
+      if (!run_pass(start)) return "time limit";
       const std::size_t below_after = below_goal();
       const double worst_after = worst();
-      if (below_after == 0) {
-        result_.stopped_by = "goal reached";
-        return;
-      }
-      if (below_after >= below && worst_after <= worst_now) {
-        result_.stopped_by = "no gain";
-        return;
-      }
+      if (below_after == 0) return "goal reached";
+      if (below_after >= below && worst_after <= worst_now) return "no gain";
       below = below_after;
       worst_now = worst_after;
     }
-    result_.stopped_by = "pass limit";
+    return "pass limit";
   }
 
- private:
+  // Queue threshold raised by `degrees`, only for tets near the ones still below the goal.
+  void escalate(double degrees) {
+    near_.assign(mesh_.points(), 0);
+    for (TetId t = 0; t < mesh_.tet_slots(); ++t)
+      if (mesh_.alive(t) && mesh_.quality(t) < goal_)
+        for (const VertexId v : mesh_.tet(t)) near_[v] = 1;
+    for (int ring = 0; ring < kEscalationRings; ++ring) {
+      std::vector<std::uint8_t> grown = near_;
+      for (TetId t = 0; t < mesh_.tet_slots(); ++t) {
+        if (!mesh_.alive(t)) continue;
+        const Tetrahedron& c = mesh_.tet(t);
+        if (near_[c[0]] || near_[c[1]] || near_[c[2]] || near_[c[3]])
+          for (const VertexId v : c) grown[v] = 1;
+      }
+      near_ = std::move(grown);
+    }
+    work_goal_ = std::sin(std::min(59.0, params_.goal_min_dihedral_deg + degrees) * kRadiansPerDegree);
+    failed_.clear();
+  }
+
+  void deescalate() {
+    near_.clear();
+    work_goal_ = goal_;
+    failed_.clear();
+  }
+
   // A queued tet, stale once its slot holds another tet or the tet changed shape.
   struct Entry {
     double quality;
@@ -143,7 +196,12 @@ class Schedule {
   using Queue = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
 
   void push_if_bad(TetId t) {
-    if (mesh_.alive(t) && mesh_.quality(t) < goal_) queue_.push({mesh_.quality(t), t, mesh_.tet(t)});
+    if (!mesh_.alive(t) || !(mesh_.quality(t) < work_goal_)) return;
+    const Tetrahedron& c = mesh_.tet(t);
+    if (!near_.empty() && !((c[0] < near_.size() && near_[c[0]]) || (c[1] < near_.size() && near_[c[1]]) ||
+                            (c[2] < near_.size() && near_[c[2]]) || (c[3] < near_.size() && near_[c[3]])))
+      return;
+    queue_.push({mesh_.quality(t), t, c});
   }
 
   // Asks the cancellation callback and the clock; false when the time is up.
@@ -158,7 +216,8 @@ class Schedule {
     queue_ = Queue();
     for (TetId t = 0; t < mesh_.tet_slots(); ++t) push_if_bad(t);
     const double initial = static_cast<double>(std::max<std::size_t>(1, result_.below_goal_before));
-    const std::size_t budget = kTriesPerBadTet * queue_.size();
+    // Escalated, the queue holds good tets near the stuck ones: the budget follows the stuck ones.
+    const std::size_t budget = kTriesPerBadTet * (near_.empty() ? queue_.size() : below_goal());
     std::size_t tried = 0;
     while (!queue_.empty() && tried < budget) {
       const Entry e = queue_.top();
@@ -291,6 +350,8 @@ class Schedule {
   const ImproveParams& params_;
   ImproveResult& result_;
   const double goal_;  // the objective's value at the goal angles
+  double work_goal_;   // the queue's threshold: the goal, or higher while escalated
+  std::vector<std::uint8_t> near_;  // while escalated: the vertices near the stuck tets
   struct Candidate {
     Move move;
     bool edge;  // edge removal, else multi-face removal

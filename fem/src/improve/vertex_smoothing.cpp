@@ -13,7 +13,7 @@ namespace {
 constexpr double kMaxStepOfShortestEdge = 0.5;
 // A move must raise the worst sine by this much (0.006 degrees near 15): smaller gains only
 // feed the queue with the same tets again (Stellar's MINSMOOTHIMPROVEMENT plays the same role).
-constexpr double kMinGain = 1e-4;
+constexpr double kMinGain = 1e-3;
 
 // The tet t with corner `slot` free, as (fixed..., free) of the same orientation: each order
 // below is an even permutation of t's corners.

@@ -11,13 +11,13 @@ namespace meshprep::improve {
 namespace {
 
 // At most this many iterations; each either gains or ends the climb.
-constexpr int kMaxIterations = 24;
+constexpr int kMaxIterations = 12;
 // Tets within this of the worst quality form the active set (qualities are sines in [0, 1]).
 constexpr double kActiveBand = 1e-3;
 // The gradients of at most this many of the worst tets define the search direction.
 constexpr std::size_t kMaxActive = 6;
 // Step halvings before the line search gives up.
-constexpr int kMaxHalvings = 12;
+constexpr int kMaxHalvings = 8;
 
 
 // True if d satisfies the optimality condition of the smallest-norm point of hull(g): every
