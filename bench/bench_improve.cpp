@@ -53,8 +53,10 @@ int main(int argc, char** argv) {
     const double volume_before = analyze_tet_quality(tets).volume;
     const ImproveResult r = improve_tets(tets, params);
     const TetQualityReport after = analyze_tet_quality(tets);
-    std::string name = std::filesystem::path(path).parent_path().filename().string();
-    if (name.empty()) name = std::filesystem::path(path).stem().string();
+    // The pipeline's outputs are all surface.ply: name those by their folder.
+    const std::filesystem::path file(path);
+    std::string name = file.stem().string();
+    if (name == "surface" && !file.parent_path().filename().empty()) name = file.parent_path().filename().string();
     std::printf("%-28s %8zu %8.3f %8.3f %7.2f | %7.2f %7.2f %6zu | %7.2f %7.2f %6zu | %5zu %5zu %5zu %5zu %s (cmp %zu, ctr %zu, dV %.1e, inv %zu, limiting %zu, bound %.2f)\n",
                 name.c_str(), r.tets_after, tetgen, r.seconds, r.seconds / tetgen, r.min_dihedral_before_deg,
                 r.max_dihedral_before_deg, r.below_goal_before, r.min_dihedral_after_deg, r.max_dihedral_after_deg,
