@@ -3,6 +3,8 @@
 // exactly), the whole schedule on TetGen's tets, regions, what the surface forbids, and stopping.
 #include "improve/compound_move.h"
 #include "improve/edge_contraction.h"
+#include "improve/exact_orientation.h"
+#include "improve/surface_limits.h"
 #include "improve/tet_complex.h"
 #include "improve/tet_objective.h"
 #include "improve/topological_moves.h"
@@ -364,7 +366,11 @@ TEST(Smoothing, NeverInvertsATetUnderRandomPerturbations) {
         for (const TetId t : star) worst = std::min(worst, c.quality(t));
         smooth_vertex(c, v);
         double now = 1;
-        for (const TetId t : star) now = std::min(now, c.quality(t));
+        for (const TetId t : star) {
+          now = std::min(now, c.quality(t));
+          const Tetrahedron& k = c.tet(t);
+          EXPECT_TRUE(positively_oriented(c.point(k[0]), c.point(k[1]), c.point(k[2]), c.point(k[3]))) << "seed " << seed;
+        }
         EXPECT_GE(now, worst) << "seed " << seed;
       }
     EXPECT_TRUE(all_positive(c.to_mesh(m))) << "seed " << seed;
@@ -453,6 +459,36 @@ TEST(ImproveTets, NamesTheEdgesWhereTheSurfaceForbidsTheGoal) {
   EXPECT_NEAR(r.limiting_edges.front().midpoint.x(), 0, 1e-12);  // on the edge x = y = 0
   EXPECT_NEAR(r.limiting_edges.front().midpoint.y(), 0, 1e-12);
   EXPECT_LE(r.min_dihedral_after_deg, r.surface_bound_deg + 1e-9);  // the bound holds
+}
+
+TEST(SurfaceLimits, AWedgeFilledByTwoTetsIsBoundedByItsBestSplit) {
+  // A 28-degree wedge at the edge u-v whose boundary faces are needles reaching far past v: the one
+  // tet joining both faces' far corners is flat, and three or more tets at the edge leave one at
+  // most 28 / 3 degrees there, so the bound is decided by the best inner point X of the two tets
+  // (face 1, X), (face 2, X). Two tets split the 28 degrees at the edge: the bound is at most 14,
+  // under the goal of 15.
+  const double alpha = 28 * kDegree;
+  TetMesh m;
+  m.points = {{0, 0, 0}, {0, 0, 1}, {0.2, 0, 3}, {0.2 * std::cos(alpha), 0.2 * std::sin(alpha), 3},
+              {0.1 * std::cos(alpha / 2), 0.1 * std::sin(alpha / 2), 1.5}};
+  m.tets = {{0, 1, 2, 4}, {0, 1, 4, 3}};
+  m.tet_regions = {1, 1};
+  if (!all_positive(m)) std::swap(m.tets[0][0], m.tets[0][1]), std::swap(m.tets[1][0], m.tets[1][1]);
+  ASSERT_TRUE(all_positive(m));
+  const TetComplex c(m, kWeight);
+  const double forced = tet_shape(m.points[0], m.points[1], m.points[2], m.points[3]).min_dihedral_deg;
+  const double given = std::min(tet_shape(m.points[0], m.points[1], m.points[2], m.points[4]).min_dihedral_deg,
+                                tet_shape(m.points[0], m.points[1], m.points[4], m.points[3]).min_dihedral_deg);
+  const auto limiting = limiting_boundary_edges(c, 15);
+  const auto edge = std::find_if(limiting.begin(), limiting.end(), [](const LimitingBoundaryEdge& e) {
+    return std::min(e.a, e.b) == 0 && std::max(e.a, e.b) == 1;
+  });
+  ASSERT_NE(edge, limiting.end());
+  EXPECT_NEAR(edge->interior_angle_deg, 28, 1e-9);
+  EXPECT_LT(forced, 28.0 / 3);
+  EXPECT_GT(edge->bound_deg, std::max(forced, 28.0 / 3));  // the split decides
+  EXPECT_GE(edge->bound_deg, given - 1e-6);  // at least the X the mesh has (here the best: 14)
+  EXPECT_LE(edge->bound_deg, 14 + 1e-9);
 }
 
 TEST(ImproveTets, CancellationLeavesTheMeshUnchanged) {

@@ -1,6 +1,7 @@
 #include "surface_limits.h"
 
 #include "exact_orientation.h"
+#include "worst_tet_maximiser.h"
 
 #include "meshprep/fem/tet_quality.h"
 
@@ -25,11 +26,40 @@ struct EdgeKeyHash {
 EdgeKey edge_key(VertexId a, VertexId b, int region) { return a < b ? EdgeKey{a, b, region} : EdgeKey{b, a, region}; }
 
 struct BoundaryEdge {
-  double angle = 0;          // radians, summed over the tets at the edge
-  VertexId apex[2] = {0, 0};  // the far corners of the boundary faces at the edge
-  std::array<VertexId, 3> face{};  // the first boundary face, oriented out of the solid
+  double angle = 0;                   // radians, summed over the tets at the edge
+  std::array<VertexId, 3> face[2]{};  // the two boundary faces at the edge, oriented out of the solid
+  VertexId apex[2] = {0, 0};          // their far corners
   int faces = 0;
 };
+
+// The tet joining a face oriented out of the solid, (x, y, z), to an inner point: (x, z, y, point).
+OneFreeCornerTet on_face(const TetComplex& mesh, const std::array<VertexId, 3>& f) {
+  return {{mesh.point(f[0]), mesh.point(f[2]), mesh.point(f[1])}};
+}
+
+// With only its smallest dihedral angle counted: the objective with obtuse angles never the worst.
+constexpr double kAcuteOnly = 1e300;
+
+// The best smallest dihedral angle of two tets splitting the wedge at edge (u, v): its two boundary
+// faces joined to one point X inside it, (face 0, X) and (face 1, X), X placed by the same
+// maximiser as the smoothing from two starts inside the wedge (the maximum found, not a proven one).
+double best_two_tet_split(const TetComplex& mesh, const BoundaryEdge& edge, VertexId u, VertexId v) {
+  const std::vector<OneFreeCornerTet> tets = {on_face(mesh, edge.face[0]), on_face(mesh, edge.face[1])};
+  const Vec3 &pu = mesh.point(u), &pv = mesh.point(v);
+  const double length = (pv - pu).norm();
+  const auto inward = [&](const std::array<VertexId, 3>& f) {
+    return -Vec3((mesh.point(f[1]) - mesh.point(f[0])).cross(mesh.point(f[2]) - mesh.point(f[0]))).normalized();
+  };
+  const Vec3 starts[2] = {0.25 * (pu + pv + mesh.point(edge.apex[0]) + mesh.point(edge.apex[1])),
+                          0.5 * (pu + pv) + 0.25 * length * (inward(edge.face[0]) + inward(edge.face[1])).normalized()};
+  double best = 0;
+  for (const Vec3& start : starts) {
+    if (!all_positive(tets, start)) continue;
+    const MaximisedPosition at = maximise_worst_tet(tets, start, 0.5 * length, kAcuteOnly);
+    best = std::max(best, std::asin(std::clamp(at.worst, 0.0, 1.0)) * 180.0 / M_PI);
+  }
+  return best;
+}
 
 // The dihedral angle of a tet at its edge (corners i, j): pi minus the angle between the outward
 // normals of the faces opposite the other two corners.
@@ -56,8 +86,7 @@ std::vector<LimitingBoundaryEdge> limiting_boundary_edges(const TetComplex& mesh
       const auto f = outward_face(mesh.tet(t), c);
       for (int e = 0; e < 3; ++e) {
         BoundaryEdge& edge = edges[edge_key(f[e], f[(e + 1) % 3], mesh.region(t))];
-        if (edge.faces < 2) edge.apex[edge.faces] = f[(e + 2) % 3];
-        if (edge.faces == 0) edge.face = f;
+        if (edge.faces < 2) edge.face[edge.faces] = f, edge.apex[edge.faces] = f[(e + 2) % 3];
         ++edge.faces;
       }
     }
@@ -76,15 +105,15 @@ std::vector<LimitingBoundaryEdge> limiting_boundary_edges(const TetComplex& mesh
   std::vector<LimitingBoundaryEdge> limiting;
   for (const auto& [key, edge] : edges) {
     const double alpha = edge.angle * 180.0 / M_PI;
-    if (edge.faces != 2 || alpha >= 2 * goal_min_dihedral_deg) continue;  // alpha / 2 already allows the goal
+    if (edge.faces != 2 || alpha / 3 >= goal_min_dihedral_deg) continue;  // three tets of alpha / 3 may do
     // The forced tet: the first face (x, y, z), oriented outwards, joined to the other apex w is
     // the tet (x, z, y, w), valid if positive.
-    const auto& f = edge.face;
+    const auto& f = edge.face[0];
     const VertexId w = edge.apex[1];
     double forced = 0;
     if (positively_oriented(mesh.point(f[0]), mesh.point(f[2]), mesh.point(f[1]), mesh.point(w)))
       forced = tet_shape(mesh.point(f[0]), mesh.point(f[2]), mesh.point(f[1]), mesh.point(w)).min_dihedral_deg;
-    const double bound = std::max(forced, alpha / 2);
+    const double bound = std::max({forced, best_two_tet_split(mesh, edge, key.a, key.b), alpha / 3});
     if (bound >= goal_min_dihedral_deg) continue;
     limiting.push_back({key.a, key.b, 0.5 * (mesh.point(key.a) + mesh.point(key.b)), alpha, bound});
   }

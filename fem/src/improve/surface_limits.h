@@ -1,12 +1,18 @@
 #pragma once
 // What the boundary forbids. At a boundary edge e the tets around it split the solid's interior
-// angle alpha there (the sum of their dihedral angles at e). With one tet at e, that tet is
-// forced: e joined to the far corners a1, a2 of the two boundary faces at e, whose shape is fixed
-// by the surface; with k >= 2 tets, one of them has a dihedral angle <= alpha / k <= alpha / 2 at
-// e. So no tets, whatever their inner vertices, have a smallest dihedral angle above
-//     bound(e) = max(smallest dihedral of the tet (e, a1, a2) if it is a valid tet, alpha / 2),
+// angle alpha there (the sum of their dihedral angles at e). With one tet at e, that tet is forced:
+// e joined to the far corners a1, a2 of the two boundary faces at e, whose shape is fixed by the
+// surface. With two, they are the two boundary faces joined to one inner point X. With k >= 3, one
+// of them has a dihedral angle <= alpha / k <= alpha / 3 at e. So no tets, whatever their inner
+// vertices, have a smallest dihedral angle above
+//     bound(e) = max(smallest dihedral of the tet (e, a1, a2) if it is a valid tet,
+//                    best smallest dihedral of the two tets (face 1, X), (face 2, X) over X,
+//                    alpha / 3),
 // and a boundary kept exactly caps the whole mesh at the smallest bound. A sharp edge (alpha below
-// the goal) is the plain case; a wedge under twice the goal whose forced tet is flat is the other.
+// the goal) is the plain case; a wedge under three times the goal whose one- and two-tet fillings
+// are poor is the other (dino's claw: a 31.6-degree wedge whose forced tet has 4.2 degrees and
+// whose best split 6.9: at most 10.5). The two-tet term is the best the smoothing's maximiser finds
+// from two starts, not a proven maximum: where it decides the bound, a better X could raise it.
 
 #include "tet_complex.h"
 
