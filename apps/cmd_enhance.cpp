@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
+#include "stage_failure.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
@@ -52,7 +53,7 @@ int run_enhance(EnhanceOptions o) {
   if (o.max_deviation != "auto") o.params.max_deviation = std::stod(o.max_deviation);
   ProgressBar bar("enhance");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
-  const EnhanceResult result = enhance(loaded.mesh, reference.get(), o.params);
+  const EnhanceResult result = run_stage_on(o.input, [&] { return enhance(loaded.mesh, reference.get(), o.params); });
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 

@@ -4,6 +4,7 @@
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
+#include "stage_failure.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
@@ -55,7 +56,7 @@ int run_reconstruct(const ReconstructOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   ReconstructResult result;
   try {
-    result = reconstruct_surface(input.points, params);
+    result = run_stage_on(o.input, [&] { return reconstruct_surface(input.points, params); });
   } catch (const InvalidInput& e) {
     throw InvalidInput(o.input + ": " + e.what());
   }

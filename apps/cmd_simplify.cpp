@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
+#include "stage_failure.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
@@ -58,7 +59,7 @@ int run_simplify(const SimplifyOptions& o) {
   params.enhance = o.enhance;
   ProgressBar bar("simplify");
   params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
-  const SimplifyResult result = simplify(loaded.mesh, params);
+  const SimplifyResult result = run_stage_on(o.input, [&] { return simplify(loaded.mesh, params); });
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 

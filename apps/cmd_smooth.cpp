@@ -4,6 +4,7 @@
 #include "cli_common.h"
 #include "interrupt.h"
 #include "progress_bar.h"
+#include "stage_failure.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
@@ -41,7 +42,7 @@ int run_smooth(SmoothOptions o) {
   o.params.method = kMethods.at(o.method);
   ProgressBar bar("smooth");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
-  const SmoothResult result = smooth(loaded.mesh, o.params);
+  const SmoothResult result = run_stage_on(o.input, [&] { return smooth(loaded.mesh, o.params); });
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 

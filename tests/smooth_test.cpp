@@ -1,4 +1,5 @@
 #include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
 #include "meshprep/preprocess/smooth.h"
 #include "meshprep/quality/triangle_metrics.h"
 
@@ -203,6 +204,19 @@ TEST(Smooth, TheBaselinesSmoothToo) {
     smooth(mesh, params);
     EXPECT_LT(rms_radial_error(mesh), before);
   }
+}
+
+TEST(Smooth, ACadPartWithHolesStaysFinite) {
+  // At edges of the handle's holes the alternating projections onto a feature line's two sides
+  // diverged and NaN reached the output (issue 30). A refused move keeps the vertex; an accepted
+  // one is at most the vertex's mean edge, so no vertex moves farther than the longest edge.
+  TriMesh mesh = load_mesh(MESHPREP_TEST_DATA_DIR "/handle.off").mesh;
+  const TriangleSoup before = soup_from_mesh(mesh);
+  double longest_edge = 0;
+  for (const auto e : mesh.edges()) longest_edge = std::max(longest_edge, static_cast<double>(mesh.calc_edge_length(e)));
+  ASSERT_NO_THROW(smooth(mesh));
+  for (const auto v : mesh.vertices()) EXPECT_TRUE(at(mesh, v).allFinite()) << "vertex " << v.idx();
+  EXPECT_LE(largest_move(before, mesh), longest_edge);
 }
 
 TEST(Smooth, RefusesBadParameters) {

@@ -48,15 +48,19 @@ class Run {
 
   PipelineResult run() {
     const Clock::time_point start = Clock::now();
-    if (result_.from_points) reconstruct();
-    else check_input();
-    input_self_intersections_ = result_.input_quality.self_intersections;
-    simplify_stage();
-    smooth_stage();
-    enhance_stage();
-    quality_stage();
-    tetrahedralize_stage();
-    improve_stage();
+    try {
+      if (result_.from_points) reconstruct();
+      else check_input();
+      input_self_intersections_ = result_.input_quality.self_intersections;
+      simplify_stage();
+      smooth_stage();
+      enhance_stage();
+      quality_stage();
+      tetrahedralize_stage();
+      improve_stage();
+    } catch (const SolverError& e) {  // a stage could not do its work on this input: name the file
+      throw PipelineFailed(result_.input + ": " + e.what());
+    }
     deliver_verdict();  // judges the final tets: a stage that changes them goes before it
     result_.seconds = seconds_since(start);
     return std::move(result_);

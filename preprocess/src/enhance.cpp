@@ -9,6 +9,7 @@
 #include "topology_cleanup.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/surface_distance.h"
@@ -180,6 +181,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   const detail::MoveGuards final_guards(mesh, constraints, allowed_distance, allowed_intersections, max_deviation);
   fit_surface_vertices(mesh, constraints, min_angle_cosine);
   result.undone_moves += final_guards.enforce(mesh);
+  require_finite_points(mesh, "enhance");
   result.after = detail::measure_tail(mesh, params.target_min_angle_deg);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -109,9 +109,11 @@ std::vector<Vec3> rbf_smoothing_step(const TriMesh& mesh, const SmoothParams& pa
     }
   };
   // A move longer than the vertex's mean edge is refused: a local surface that is not a graph over
-  // its frame (a thin part folded into the neighbourhood) can throw the vertex far.
+  // its frame (a thin part folded into the neighbourhood) can throw the vertex far, and the
+  // alternating projections onto a feature line's two sides can diverge (the corpus's handle and
+  // spool, at edges of their holes): a NaN target is refused as well.
   auto place = [&](std::size_t i, const Vec3& target, const Ring& ring) {
-    if ((target - moved[i]).norm() > ring.mean_edge) {
+    if (!((target - moved[i]).norm() <= ring.mean_edge)) {
       ++unfitted;
       return false;
     }

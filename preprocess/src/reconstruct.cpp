@@ -1,6 +1,7 @@
 #include "meshprep/preprocess/reconstruct.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/finite_points.h"
 #include "meshprep/preprocess/simplify.h"
 
 #include "grid_gaps.h"
@@ -245,6 +246,7 @@ ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const Rec
     adapt_to_features(pu, params, result);
     result.filled_faces.clear();  // the faces are new; filled_triangles still counts the grid's
   }
+  require_finite_points(result.mesh.points, "reconstruct");
   return result;
 }
 

@@ -8,6 +8,7 @@
 #include "surface_fit.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_bvh.h"
@@ -262,6 +263,7 @@ SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
   const ShiftedToOrigin near_origin(mesh);  // quadrics square the coordinates
   SimplifyResult result =
       params.enhance && params.cost != CollapseCost::Quadric ? simplify_and_enhance(mesh, params) : reduce(mesh, params);
+  require_finite_points(mesh, "simplify");
   if (params.progress) params.progress(1.0);
   const double slack = 0.01 * static_cast<double>(result.target_faces);
   result.reached_target =

@@ -5,6 +5,7 @@
 #include "rbf_smoothing.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"
@@ -97,6 +98,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
   for (const auto v : mesh.vertices())
     result.max_displacement =
         std::max(result.max_displacement, static_cast<double>((mesh.point(v) - before[static_cast<std::size_t>(v.idx())]).norm()));
+  require_finite_points(mesh, "smooth");
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
