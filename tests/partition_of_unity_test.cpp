@@ -164,6 +164,26 @@ TEST(PartitionOfUnity, RefusesBadInput) {
   EXPECT_THROW(PartitionOfUnity(sample(100, [](double, double) { return 0.0; }), bad), InvalidInput);
 }
 
+TEST(PartitionOfUnity, RefusesPointsAlongACurveAndAcceptsANarrowStrip) {
+  // 1,000 points on a line with 1e-9 noise across it (issue 30: a grid of 178 k needles), and the
+  // same on a tilted line; then a strip three samples wide, which is a surface.
+  std::vector<Vec3> line;
+  for (int i = 0; i < 1000; ++i) {
+    const double t = i / 999.0;
+    line.push_back(Vec3(t, 2 * t, 3 * t) + 1e-9 * Vec3(std::sin(7.0 * i), std::cos(11.0 * i), std::sin(13.0 * i)));
+  }
+  try {
+    const PartitionOfUnity pu(line);
+    ADD_FAILURE() << "points on a line accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("along a curve"), std::string::npos) << e.what();
+  }
+  std::vector<Vec3> strip;
+  for (int i = 0; i < 300; ++i)
+    for (int j = 0; j < 3; ++j) strip.push_back(tilt() * Vec3(0.01 * i + 0.003 * j, 0.01 * j, 0));
+  EXPECT_NO_THROW(PartitionOfUnity{strip});
+}
+
 TEST(SharedPartitionOfUnity, JacksboroHeldOutPoints) {
   // The anchors' measurement (../shared/anchors.md): predict the grid points not in the sample.
   const std::filesystem::path dir = std::filesystem::path(MESHPREP_SHARED_DATA_DIR) / "points";
