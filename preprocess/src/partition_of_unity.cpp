@@ -141,7 +141,7 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
   const double width = std::sqrt(12 * frame_.eigenvalues.y());
   if (!(width >= 0.5 * median_spacing_)) {
     std::ostringstream message;
-    message << "the points lie along a curve, not over a surface: they spread " << width
+    message << "the points are nearly collinear (along a curve, not over a surface): they spread " << width
             << " across it, under half the spacing between neighbouring samples (" << median_spacing_ << ")";
     throw InvalidInput(message.str());
   }

@@ -87,7 +87,7 @@ std::vector<Vec3> relocate_on_surface(const TriMesh& mesh, const SurfaceConstrai
   }
   for (const auto v : mesh.vertices()) {
     const std::size_t i = static_cast<std::size_t>(v.idx());
-    charts[i] = active[i] ? chart_of(mesh, constraints, v) : fixed_chart(point(mesh, v));
+    charts[i] = in_units_of(active[i] ? chart_of(mesh, constraints, v) : fixed_chart(point(mesh, v)), scale);
   }
 
   // The fidelity residual's tangent plane: the reference at the closest point to each centroid.
@@ -127,11 +127,11 @@ std::vector<Vec3> relocate_on_surface(const TriMesh& mesh, const SurfaceConstrai
     double* block = unknowns[static_cast<std::size_t>(v.idx())].data();
     if (!problem.HasParameterBlock(block)) continue;
     const VertexChart& chart = charts[static_cast<std::size_t>(v.idx())];
-    if (chart.t1.isZero()) {
+    if (chart.fixed()) {
       problem.SetParameterBlockConstant(block);
       continue;
     }
-    if (chart.t2.isZero()) problem.SetManifold(block, new ceres::SubsetManifold(2, {1}));
+    if (chart.on_line()) problem.SetManifold(block, new ceres::SubsetManifold(2, {1}));
   }
 
   ceres::Solver::Options options;

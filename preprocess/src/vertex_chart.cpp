@@ -42,4 +42,12 @@ VertexChart fixed_chart(const Vec3& origin) {
   return chart;
 }
 
+VertexChart in_units_of(VertexChart chart, double length) {
+  chart.t1 *= length;
+  chart.t2 *= length;
+  for (int i = 0; i < 3; ++i) chart.height[i] *= length * length;  // the quadratic terms
+  for (int i = 3; i < 5; ++i) chart.height[i] *= length;           // the linear ones
+  return chart;
+}
+
 }  // namespace meshprep::detail

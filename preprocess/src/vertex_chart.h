@@ -12,6 +12,11 @@ struct VertexChart {
   Vec3 origin = Vec3::Zero(), t1 = Vec3::Zero(), t2 = Vec3::Zero(), normal = Vec3::Zero();
   double height[5] = {0, 0, 0, 0, 0};
 
+  // Exact tests: the tangents are scaled to the mesh's units (in_units_of), so a relative
+  // isZero() would call a chart on a part a micrometre wide fixed.
+  bool fixed() const { return t1 == Vec3::Zero(); }
+  bool on_line() const { return t2 == Vec3::Zero(); }
+
   template <typename T>
   void position(const T* uv, T* x) const {
     const T& u = uv[0];
@@ -31,5 +36,10 @@ VertexChart line_chart(const Vec3& origin, const Vec3& direction);
 
 /// A chart that cannot move.
 VertexChart fixed_chart(const Vec3& origin);
+
+/// The same chart with its unknowns in units of `length` (u' = u / length): the solver's
+/// tolerances are absolute (Ceres stops on |step| <= (|x| + 1e-8) 1e-8 and on a gradient under
+/// 1e-10), so unknowns in the mesh's own units made the result depend on millimetres vs metres.
+VertexChart in_units_of(VertexChart chart, double length);
 
 }  // namespace meshprep::detail
