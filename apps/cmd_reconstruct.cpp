@@ -24,7 +24,7 @@ struct ReconstructOptions {
   std::string input, output, json;
   std::vector<std::size_t> resolution{300, 300};
   double spacing = 0, max_gap = 0, variation_growth = 1.5;
-  bool adaptive = false;
+  bool adaptive = false, fill_holes = false;
   std::size_t leaf_size = 16, neighbors = 40, vertices = 0;
   std::size_t threads = 0;
   std::string variation_threshold = "p90";
@@ -46,6 +46,7 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.spacing = o.spacing;
   params.vertices = o.vertices;
   params.adaptive = o.adaptive;
+  params.fill_holes = o.fill_holes;
   params.max_gap = o.max_gap;
   params.fit.leaf_size = o.leaf_size;
   params.fit.neighbors = o.neighbors;
@@ -88,14 +89,18 @@ int run_reconstruct(const ReconstructOptions& o) {
                        {"vertex_sigma", json_distribution(summarize(result.vertex_variation))}};
   json["max_gap"] = result.max_gap;
   json["gap_faces_left_out"] = result.gap_triangles;
+  json["fill_holes"] = o.fill_holes;
+  json["filled_faces"] = result.filled_triangles;
   json["reference_normal"] = {result.normal.x(), result.normal.y(), result.normal.z()};
   json["time_seconds"] = seconds;
   if (!o.json.empty()) emit_json(json, o.json);
-  if (o.json != "-")
+  if (o.json != "-") {
     std::cout << o.input << " -> " << o.output << ": " << input.points.size() << " points, "
               << result.mesh.points.size() << " vertices, " << result.mesh.triangles.size() << " faces ("
-              << result.gap_triangles << " left out over gaps wider than " << result.max_gap << ") in " << seconds
-              << " s\n";
+              << result.gap_triangles << " left out over gaps wider than " << result.max_gap;
+    if (o.fill_holes) std::cout << "; " << result.filled_triangles << " kept over holes in the data, flagged";
+    std::cout << ") in " << seconds << " s\n";
+  }
   return kSuccess;
 }
 
@@ -140,6 +145,10 @@ Action add_reconstruct_command(CLI::App& app) {
                   "Leave out triangles farther than this from every sample (0 = 3x the median sample spacing)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd->add_flag("--fill-holes", o->fill_holes,
+                "Keep the triangles over gaps inside the footprint (flagged in the JSON) and only the largest "
+                "piece, so the surface has one boundary loop and tetrahedralize --extrude-base can close it "
+                "into a block (the pipeline does this for points)");
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results as JSON (- for standard output)");
   return [o] { return run_reconstruct(*o); };

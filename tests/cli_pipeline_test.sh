@@ -119,6 +119,16 @@ PY
 grep -q "^reconstruct " err.txt && ok || bad "with --json - the stage lines go to stderr"
 readback terrain tets.vtu
 
+# The same terrain step by step (README): reconstruct with the holes in the data filled, so the
+# surface has one boundary loop, then tetrahedralize closes it into a block.
+"$bin" reconstruct "$src/examples/data/jacksboro_10k.xyz" -o steps.ply --resolution 80 80 --fill-holes \
+  --json steps.json > /dev/null 2> err.txt
+expect_exit "reconstruct --fill-holes" 0 $?
+python3 -c 'import json, sys; j = json.load(open("steps.json")); sys.exit(not (j["fill_holes"] and j["filled_faces"] >= 0))' \
+  && ok || bad "reconstruct --json: fill_holes and filled_faces"
+"$bin" tetrahedralize steps.ply -o steps.msh --extrude-base-relative 0.1 > /dev/null 2> err.txt
+expect_exit "tetrahedralize --extrude-base-relative after reconstruct --fill-holes" 0 $?
+
 # ---- the verdict's thresholds and --fail-on ------------------------------------------------------
 # One 2-degree tet (enhancement off, no refinement, its triangles kept): not FEM-ready, exit 1, one
 # line per failed threshold, every output written and saying so.

@@ -34,7 +34,7 @@ TEST(ReferenceRelaxation, ATailVertexOfAPlaneEvensItsFacesAndStaysInThePlane) {
   mesh.set_point(v, to_openmesh(Vec3(3.7, 3.6, 0)));  // its faces get radius ratios up to ~4
   const double before = worst_ratio_around(mesh, v);
   ASSERT_GT(before, 2.0);
-  EXPECT_GE(detail::relax_on_reference(mesh, reference, 0.0, kTwentyDegrees), 1u);
+  EXPECT_GE(detail::relax_on_reference(mesh, reference, 0.0, kTwentyDegrees, detail::HeightField{}), 1u);
   const Vec3 after = to_eigen(mesh.point(v));
   EXPECT_EQ(after.z(), 0.0);  // on the plane itself: its closest point, no offset
   EXPECT_LT(worst_ratio_around(mesh, v), before);
@@ -53,7 +53,7 @@ TEST(ReferenceRelaxation, AVertexOnACreaseStays) {
   const Vec3 along_the_crease(3, 3.45, 0);
   mesh.set_point(v, to_openmesh(along_the_crease));
   ASSERT_GT(worst_ratio_around(mesh, v), 2.0);
-  detail::relax_on_reference(mesh, reference, 0.0, kTwentyDegrees);
+  detail::relax_on_reference(mesh, reference, 0.0, kTwentyDegrees, detail::HeightField{});
   EXPECT_EQ(to_eigen(mesh.point(v)), along_the_crease);
 }
 

@@ -3,8 +3,11 @@
 #include "../preprocess/src/link_condition.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
+#include "meshprep/preprocess/reconstruct.h"
 #include "meshprep/preprocess/simplify.h"
 #include "meshprep/preprocess/sliding_landmarks.h"
+#include "meshprep/quality/height_field.h"
 #include "meshprep/quality/report.h"
 
 #include "test_meshes.h"
@@ -305,6 +308,28 @@ TEST(BandedOrder, BandThenPlaceThenCost) {
   // Nothing costs less than nothing.
   EXPECT_LT(order.key(0.0, 99999), order.key(std::numeric_limits<double>::min(), 0));
   EXPECT_LT(order.key(0.0, 0), order.key(0.0, 1024));
+}
+
+TEST(Simplify, ATerrainStaysAHeightField) {
+  // The bundled Jacksboro points, reconstructed with their holes filled (one boundary loop, as the
+  // pipeline does), simplified far: at 3,000 and 1,000 faces the fault's steep faces folded over
+  // (issue 30), and the terrain could no longer be extruded into a block.
+  ReconstructParams reconstruction;
+  reconstruction.fill_holes = true;
+  const TriangleSoup terrain =
+      reconstruct_surface(read_points(MESHPREP_EXAMPLES_DATA_DIR "/jacksboro_10k.xyz").points, reconstruction).mesh;
+  const std::optional<Vec3> up = height_field_up(terrain);
+  ASSERT_TRUE(up.has_value());
+  for (const std::size_t target : {3000u, 1000u}) {
+    TriMesh mesh = mesh_from_soup(terrain);
+    SimplifyParams params;
+    params.target_faces = target;
+    simplify(mesh, params);
+    const TriangleSoup simplified = soup_from_mesh(mesh);
+    const std::optional<std::size_t> fold = first_fold(simplified, *up);
+    EXPECT_FALSE(fold.has_value()) << target << " faces: face " << fold.value_or(0) << " folds over";
+    EXPECT_NEAR(static_cast<double>(simplified.triangles.size()), static_cast<double>(target), 0.01 * static_cast<double>(target));
+  }
 }
 
 TEST(Simplify, BadParameters) {

@@ -1,6 +1,7 @@
 #include "meshprep/fem/extrude.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/quality/height_field.h"
 #include "meshprep/quality/topology.h"
 
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace meshprep {
 namespace {
@@ -83,20 +85,14 @@ SurfacePlc extrude_to_block(const TriangleSoup& surface, double depth) {
 
   // Up: the coordinate axis nearest to the area-weighted mean normal. An axis keeps the base and
   // the side walls exactly planar in floating point (TetGen asserts on facets that are not).
-  Vec3 mean_normal = Vec3::Zero();
-  for (const Triangle& t : surface.triangles)
-    mean_normal += (surface.points[t[1]] - surface.points[t[0]]).cross(surface.points[t[2]] - surface.points[t[0]]);
-  if (mean_normal.norm() == 0) throw InvalidInput("the surface has no mean normal (zero area)");
+  const std::optional<Vec3> mean_axis = mean_normal_axis(surface);
+  if (!mean_axis) throw InvalidInput("the surface has no mean normal (zero area)");
+  const Vec3 up = *mean_axis;
   int axis = 0;
-  mean_normal.cwiseAbs().maxCoeff(&axis);
-  const Vec3 up = Vec3::Unit(axis) * (mean_normal[axis] > 0 ? 1.0 : -1.0);
-  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
-    const Triangle& t = surface.triangles[f];
-    const Vec3 n = (surface.points[t[1]] - surface.points[t[0]]).cross(surface.points[t[2]] - surface.points[t[0]]);
-    if (!(n.dot(up) > 0))
-      throw InvalidInput("face " + std::to_string(f) + " folds over: the surface is not a height field over the " +
-                         std::string(1, "xyz"[axis]) + " axis, so it cannot be extruded into a block");
-  }
+  up.cwiseAbs().maxCoeff(&axis);
+  if (const std::optional<std::size_t> f = first_fold(surface, up))
+    throw InvalidInput("face " + std::to_string(*f) + " folds over: the surface is not a height field over the " +
+                       std::string(1, "xyz"[axis]) + " axis, so it cannot be extruded into a block");
 
   // Points: the referenced surface points, then their projections onto the base plane.
   SurfacePlc plc;

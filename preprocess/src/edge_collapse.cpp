@@ -129,9 +129,10 @@ EdgeEnergy edge_energy(RingUnion& rings, VertexHandle a, VertexHandle b, std::ve
 class Collapser {
  public:
   Collapser(TriMesh& mesh, const SimplifyParams& params, const CollapseScales& scales, std::vector<Quadric>& quadrics,
-            const std::vector<double>& error_cap, std::vector<int>& merged_into, SimplifyResult& result)
+            const std::vector<double>& error_cap, std::vector<int>& merged_into, SimplifyResult& result,
+            const HeightField& field)
       : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), error_cap_(error_cap),
-        merged_into_(merged_into), result_(result),
+        merged_into_(merged_into), result_(result), field_(field),
         edges_(mesh.n_edges()),
         locked_(mesh.n_vertices(), 0),
         version_(mesh.n_vertices()),
@@ -424,7 +425,7 @@ class Collapser {
   }
 
   // The faces that survive the collapse of h with its vertices at p: none may flip by more than
-  // 90 degrees or become degenerate, and their smallest angle may not fall below
+  // 90 degrees, turn away from a height field's up direction or become degenerate, and their smallest angle may not fall below
   // min(min_angle_deg, the smallest angle of the faces around the edge before).
   bool shape_ok(HalfedgeHandle h, const Vec3& p) const {
     const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
@@ -445,7 +446,7 @@ class Collapser {
         const Vec3 n0 = area_normal(at, pb, pc), n1 = area_normal(p, pb, pc);
         const double perimeter = (pb - p).norm() + (pc - pb).norm() + (p - pc).norm();
         if (!(n1.norm() > kDegenerateArea * perimeter * perimeter)) return false;
-        if (n0.dot(n1) <= 0) return false;
+        if (n0.dot(n1) <= 0 || !field_.keeps(n1)) return false;
         new_cosine = std::max(new_cosine, smallest_angle_cosine(p, pb, pc));
       }
     }
@@ -459,6 +460,7 @@ class Collapser {
   const std::vector<double>& error_cap_;
   std::vector<int>& merged_into_;
   SimplifyResult& result_;
+  const HeightField field_;
   std::vector<EdgeRecord> edges_;
   std::vector<char> locked_;  // non-manifold vertices: never moved
   // Changes each time a vertex moves or merges (unique over all vertices and times: never 0).
@@ -516,8 +518,9 @@ CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost) {
 
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
                     std::vector<Quadric>& quadrics, const std::vector<double>& error_cap,
-                    std::vector<int>& merged_into, SimplifyResult& result, const ReshapeCallback& reshape) {
-  Collapser(mesh, params, scales, quadrics, error_cap, merged_into, result).run(target, reshape);
+                    std::vector<int>& merged_into, SimplifyResult& result, const HeightField& field,
+                    const ReshapeCallback& reshape) {
+  Collapser(mesh, params, scales, quadrics, error_cap, merged_into, result, field).run(target, reshape);
 }
 
 }  // namespace meshprep::detail

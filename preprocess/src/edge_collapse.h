@@ -3,6 +3,7 @@
 // edges with lazily completed costs, the safety guards, and the quadric memory.
 
 #include "collapse_quadrics.h"
+#include "triangle_angles.h"
 
 #include "meshprep/core/mesh.h"
 #include "meshprep/preprocess/simplify.h"
@@ -33,8 +34,10 @@ CollapseScales measure_scales(const TriMesh& mesh, CollapseCost cost);
 /// something.
 enum class Reshape { Relax, FlipAndRelax };
 using ReshapeCallback = std::function<bool(Reshape)>;
+/// No collapse turns a face out of `field` (triangle_angles.h).
 void collapse_edges(TriMesh& mesh, std::size_t target, const SimplifyParams& params, const CollapseScales& scales,
                     std::vector<Quadric>& quadrics, const std::vector<double>& error_cap,
-                    std::vector<int>& merged_into, SimplifyResult& result, const ReshapeCallback& reshape = {});
+                    std::vector<int>& merged_into, SimplifyResult& result, const HeightField& field,
+                    const ReshapeCallback& reshape = {});
 
 }  // namespace meshprep::detail

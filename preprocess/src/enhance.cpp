@@ -44,7 +44,7 @@ void fit_surface_vertices(TriMesh& mesh, const detail::SurfaceConstraints& const
     const std::size_t i = static_cast<std::size_t>(v.idx());
     movable[i] = constraints.role(v) == detail::VertexRole::Surface && (!since || mesh.point(v) != (*since)[i]);
   }
-  detail::fit_to_reference(mesh, constraints.reference_bvh(), min_angle_cosine, &movable);
+  detail::fit_to_reference(mesh, constraints.reference_bvh(), min_angle_cosine, detail::HeightField{}, &movable);
 }
 
 // The rounds stop after this many in a row that did not improve the distribution (the best is

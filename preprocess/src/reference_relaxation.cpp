@@ -45,7 +45,8 @@ bool each_sample(const TriMesh& mesh, VertexHandle v, const Vec3& at, const Samp
 
 }  // namespace
 
-std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, double tolerance, double min_angle_cosine) {
+std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, double tolerance, double min_angle_cosine,
+                               const HeightField& field) {
   const ShapeTail tail{kTailMargin * ShapeTail().ratio, min_angle_cosine};
   std::size_t moves = 0;
   std::vector<Vec3> ring;
@@ -65,7 +66,7 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
           !same_side(reference, on_surface, relax->normal))
         continue;
       const Vec3 y = on_surface.point + offset * relax->normal;
-      const VertexMove move = vertex_move(mesh, v, y, kTurnCosine);
+      const VertexMove move = vertex_move(mesh, v, y, kTurnCosine, field);
       if (move.turns || !(worst_radius_ratio(mesh, v, y) < ratio_before) ||
           move.new_cosine > std::max(min_angle_cosine, move.old_cosine))
         continue;

@@ -5,6 +5,8 @@
 // violated by any move around it); here the vertex stays on the exact surface, and the faces
 // around it may not move farther from it.
 
+#include "triangle_angles.h"
+
 #include "meshprep/core/mesh.h"
 #include "meshprep/quality/triangle_bvh.h"
 
@@ -19,7 +21,9 @@ namespace meshprep::detail {
 /// the largest radius ratio around v drops; no smallest angle falls below min(the angle whose
 /// cosine is `min_angle_cosine`, its value before); and the faces' farthest sample from
 /// `reference` (their centroids and the midpoints of v's edges) stays within max(`tolerance`,
-/// its distance before). Returns the number of vertices moved.
-std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, double tolerance, double min_angle_cosine);
+/// its distance before); and no face turns away from `field`'s up direction. Returns the number
+/// of vertices moved.
+std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, double tolerance, double min_angle_cosine,
+                               const HeightField& field);
 
 }  // namespace meshprep::detail

@@ -19,7 +19,7 @@ Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v))
 
 bool nearly_parallel(const Vec3& n0, const Vec3& n1) { return n0.dot(n1) >= kFlatCosine * n0.norm() * n1.norm(); }
 
-std::size_t flip_sweep(TriMesh& mesh, double tolerance) {
+std::size_t flip_sweep(TriMesh& mesh, double tolerance, const HeightField& field) {
   std::size_t flips = 0;
   for (const auto e : mesh.edges()) {
     if (mesh.status(e).deleted() || mesh.is_boundary(e)) continue;
@@ -32,7 +32,7 @@ std::size_t flip_sweep(TriMesh& mesh, double tolerance) {
     const Vec3 m0 = area_normal(a, d, c), m1 = area_normal(d, b, c);  // the faces after the flip
     if (!nearly_parallel(n0, n1) || !nearly_parallel(m0, m1)) continue;
     const Vec3 normal = n0 + n1;
-    if (m0.dot(normal) <= 0 || m1.dot(normal) <= 0) continue;
+    if (m0.dot(normal) <= 0 || m1.dot(normal) <= 0 || !field.keeps(m0) || !field.keeps(m1)) continue;
     if (std::abs((0.5 * (a + b) - 0.5 * (c + d)).dot(normal.normalized())) > tolerance) continue;
     const double before = std::max(smallest_angle_cosine(a, b, c), smallest_angle_cosine(b, a, d));
     const double after = std::max(smallest_angle_cosine(a, d, c), smallest_angle_cosine(d, b, c));
@@ -50,7 +50,8 @@ std::size_t flip_sweep(TriMesh& mesh, double tolerance) {
 // 2.02 without halving, 1.99 with 4; bunny00 unchanged).
 constexpr int kHalvings = 4;
 
-std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, const ShapeTail* tail) {
+std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, const ShapeTail* tail,
+                        const HeightField& field) {
   std::size_t moves = 0;
   std::vector<Vec3> ring;
   for (const VertexHandle v : mesh.vertices()) {
@@ -67,7 +68,7 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
       if (error <= tolerance || error <= error_before) y = step;
     }
     if (!y) continue;
-    const VertexMove move = vertex_move(mesh, v, *y, kTurnCosine);
+    const VertexMove move = vertex_move(mesh, v, *y, kTurnCosine, field);
     if (move.turns || !(move.new_cosine < move.old_cosine)) continue;
     // Last, as the dearest test (a PCA with an eigen-solve): most vertices fail one of the above.
     if (on_feature(mesh, v, ring)) continue;
@@ -80,10 +81,10 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
 }  // namespace
 
 PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, bool flips,
-                          const ShapeTail* tail) {
+                          const ShapeTail* tail, const HeightField& field) {
   PolishCounts counts;
-  if (flips) counts.flips = flip_sweep(mesh, tolerance);
-  counts.moves = relax_sweep(mesh, quadrics, tolerance, tail);
+  if (flips) counts.flips = flip_sweep(mesh, tolerance, field);
+  counts.moves = relax_sweep(mesh, quadrics, tolerance, tail, field);
   return counts;
 }
 

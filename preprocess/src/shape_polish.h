@@ -3,6 +3,7 @@
 // the surface stays where the quadrics say the original was.
 
 #include "collapse_quadrics.h"
+#include "triangle_angles.h"
 #include "vertex_relaxation.h"
 
 #include "meshprep/core/mesh.h"
@@ -22,8 +23,9 @@ struct PolishCounts {
 /// sweep over the vertices (those of the `tail`'s faces; all if it is null) not on a feature: each moves
 /// towards its 1-ring centroid in its tangent plane, the step halved until the quadric's RMS plane
 /// distance is under `tolerance` (or no larger than before), kept only if the smallest angle
-/// around it improves and no face turns by more than 60 degrees. Without `flips`, only (2).
+/// around it improves and no face turns by more than 60 degrees. Without `flips`, only (2). Neither
+/// turns a face away from `field`'s up direction.
 PolishCounts polish_shape(TriMesh& mesh, const std::vector<Quadric>& quadrics, double tolerance, bool flips,
-                          const ShapeTail* tail);
+                          const ShapeTail* tail, const HeightField& field);
 
 }  // namespace meshprep::detail

@@ -29,15 +29,16 @@ struct NormalStep {
 
 // The move keeps every face within 30 degrees of its normal and does not take a smallest angle
 // below min(the guard's bound, what it was).
-bool move_keeps_shape(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to, double min_angle_cosine) {
-  const VertexMove move = vertex_move(mesh, v, moved_to, kTurnCosine);
+bool move_keeps_shape(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to, double min_angle_cosine,
+                      const HeightField& field) {
+  const VertexMove move = vertex_move(mesh, v, moved_to, kTurnCosine, field);
   return !move.turns && move.new_cosine <= std::max(min_angle_cosine, move.old_cosine);
 }
 
 }  // namespace
 
 std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine,
-                             const std::vector<char>* movable) {
+                             const HeightField& field, const std::vector<char>* movable) {
   std::size_t moved = 0;
   for (const VertexHandle v : mesh.vertices()) {
     if (!relaxable(mesh, v)) continue;
@@ -65,7 +66,7 @@ std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double
     const double limit = kStepCap * shortest;
     const double t = std::clamp(-normal.dot(step.weighted_residual) / step.weight_squares, -limit, limit);
     const Vec3 y = x + t * normal;
-    if (t == 0 || !move_keeps_shape(mesh, v, y, min_angle_cosine)) continue;
+    if (t == 0 || !move_keeps_shape(mesh, v, y, min_angle_cosine, field)) continue;
     mesh.set_point(v, to_openmesh(y));
     ++moved;
   }

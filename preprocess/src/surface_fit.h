@@ -3,6 +3,8 @@
 // sense: the distance energy of Hoppe et al. 1993 ("Mesh optimization"), restricted to the normal
 // so the tangential layout (the triangle shapes) is left alone.
 
+#include "triangle_angles.h"
+
 #include "meshprep/core/mesh.h"
 #include "meshprep/quality/triangle_bvh.h"
 
@@ -17,9 +19,9 @@ namespace meshprep::detail {
 /// with w = 2/3), c_s the closest point of `reference` to p_s and w_s the barycentric weight of v
 /// at p_s. The step is capped at a quarter of the shortest edge at v and refused if a face would
 /// turn by more than 30 degrees or a smallest angle would drop below min(the angle whose cosine is
-/// `min_angle_cosine`, its value before). Only vertices flagged in `movable` (by vertex index) are
+/// `min_angle_cosine`, its value before) or a face turn away from `field`'s up direction. Only vertices flagged in `movable` (by vertex index) are
 /// fitted when it is given. Returns the number of vertices moved.
 std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine,
-                             const std::vector<char>* movable = nullptr);
+                             const HeightField& field, const std::vector<char>* movable = nullptr);
 
 }  // namespace meshprep::detail

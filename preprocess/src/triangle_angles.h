@@ -34,14 +34,46 @@ inline bool sharpens_into_fold(double before, double after) {
   return after < fold_cosine && after < before;
 }
 
+/// A height field's up direction: while it is set, no face may become steeper than the steepest
+/// face it had or 60 degrees, whichever is steeper (its normal's cosine with `up` at most
+/// `min_cosine`). So a terrain stays one, and a face at its rim meets the block's vertical wall at
+/// 30 degrees or more (twice the tet improvement's 15-degree goal: a wedge of alpha allows tets of
+/// about alpha / 2 there, docs/tet_improvement.md), or as sharply as the input did. Unset: no rule.
+struct HeightField {
+  Vec3 up = Vec3::Zero();
+  double min_cosine = 0;
+  bool keeps(const Vec3& area_normal) const {
+    return up == Vec3::Zero() || area_normal.dot(up) > min_cosine * area_normal.norm();
+  }
+};
+
+/// The HeightField of `mesh` over `up` (unset if `up` is zero): its steepest face's cosine.
+inline HeightField height_field_of(const TriMesh& mesh, const Vec3& up) {
+  HeightField field;
+  if (up == Vec3::Zero()) return field;
+  field.up = up.normalized();
+  field.min_cosine = 1;
+  for (const auto f : mesh.faces()) {
+    const auto h = mesh.halfedge_handle(f);
+    const Vec3 a = to_eigen(mesh.point(mesh.from_vertex_handle(h))), b = to_eigen(mesh.point(mesh.to_vertex_handle(h))),
+               c = to_eigen(mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
+    const Vec3 n = area_normal(a, b, c);
+    if (n.norm() > 0) field.min_cosine = std::min(field.min_cosine, n.dot(field.up) / n.norm());
+  }
+  const double sixty_degrees = 0.5;
+  field.min_cosine = std::clamp(field.min_cosine, 0.0, sixty_degrees);  // (0: an input fold, none further)
+  return field;
+}
+
 /// What moving vertex v to `moved_to` does to the faces around it.
 struct VertexMove {
-  bool turns = false;       ///< a face normal turns by more than the angle whose cosine was given
+  bool turns = false;       ///< a face normal turns by more than the angle whose cosine was given, or over `field`
   double old_cosine = -1;   ///< largest smallest_angle_cosine of the faces before the move
   double new_cosine = -1;   ///< and after (both meaningful only when !turns)
 };
 
-inline VertexMove vertex_move(const TriMesh& mesh, TriMesh::VertexHandle v, const Vec3& moved_to, double turn_cosine) {
+inline VertexMove vertex_move(const TriMesh& mesh, TriMesh::VertexHandle v, const Vec3& moved_to, double turn_cosine,
+                              const HeightField& field) {
   VertexMove move;
   for (const auto f : mesh.vf_range(v)) {
     Vec3 before[3], after[3];
@@ -52,7 +84,7 @@ inline VertexMove vertex_move(const TriMesh& mesh, TriMesh::VertexHandle v, cons
       ++k;
     }
     const Vec3 n0 = area_normal(before[0], before[1], before[2]), n1 = area_normal(after[0], after[1], after[2]);
-    if (n0.dot(n1) <= turn_cosine * n0.norm() * n1.norm()) {
+    if (n0.dot(n1) <= turn_cosine * n0.norm() * n1.norm() || !field.keeps(n1)) {
       move.turns = true;
       return move;
     }

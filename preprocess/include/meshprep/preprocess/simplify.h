@@ -17,7 +17,9 @@
 ///
 /// Safety, always on (Bending and Distance): OpenMesh's link condition (is_collapse_ok) keeps the
 /// topology (closed stays closed, manifold stays manifold, genus unchanged); no face normal may
-/// turn by more than 90 degrees or become degenerate; boundary vertices stay on the boundary and
+/// turn by more than 90 degrees or become degenerate; an open height field over a coordinate axis
+/// (a terrain, quality/height_field.h) gets no face steeper than its steepest one, so it stays a
+/// height field that fem's extrude_to_block can close; boundary vertices stay on the boundary and
 /// non-manifold vertices are never moved; a collapse whose new faces have a smallest angle below
 /// min(min_angle_deg, the old smallest angle around the edge) is refused. Self-intersections are
 /// checked on the output: where the output intersects itself and the input did not, the
