@@ -122,6 +122,11 @@ ThreadLimit::ThreadLimit(std::size_t threads)
 
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice) {
+  if (output.self_intersections > 0 && output.self_intersections <= input_intersections) {
+    std::cerr << "meshprep: warning: " << output.path << " still intersects itself at " << output.self_intersections
+              << " face pairs (the input at " << input_intersections << "): tets need a surface that does not\n";
+    return;
+  }
   if (output.self_intersections <= input_intersections) return;
   throw WorkFailed(path + ": the " + what + " surface intersects itself at " +
                    std::to_string(output.self_intersections - input_intersections) +

@@ -34,7 +34,8 @@ void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 void ensure_not_input(const std::string& output, const std::string& input);
 
 /// \throws WorkFailed if `output` (a report against the input) has more self-intersecting face
-/// pairs than the input had, naming the first pair and what to try instead.
+/// pairs than the input had, naming the first pair and what to try instead; when it has as many or
+/// fewer but some, says so on stderr (the output is still written: the input had them).
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
 

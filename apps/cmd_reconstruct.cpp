@@ -55,12 +55,7 @@ int run_reconstruct(const ReconstructOptions& o) {
   ProgressBar bar("reconstruct");
   params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const auto start = std::chrono::steady_clock::now();
-  ReconstructResult result;
-  try {
-    result = run_stage_on(o.input, [&] { return reconstruct_surface(input.points, params); });
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(o.input + ": " + e.what());
-  }
+  const ReconstructResult result = run_stage_on(o.input, [&] { return reconstruct_surface(input.points, params); });
   bar.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.mesh.triangles.empty())

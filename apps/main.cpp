@@ -2,6 +2,7 @@
 #include "cli_common.h"
 #include "heap_policy.h"
 #include "interrupt.h"
+#include "solver_logging.h"
 
 #include "meshprep/core/errors.h"
 
@@ -12,6 +13,7 @@ using namespace meshprep;
 
 int main(int argc, char** argv) {
   cli::keep_freed_memory_for_reuse();
+  cli::quiet_solver_logging(argv[0]);
   CLI::App app{"meshprep " MESHPREP_VERSION
                " - turn raw geometry into meshes a finite-element solver can trust.\n"
                "Exit codes: 0 success, 1 the work could not be done (with the reason), 2 bad usage or unreadable input.",

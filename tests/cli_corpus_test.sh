@@ -32,6 +32,8 @@ start=$SECONDS
 
 mkdir corpus runs
 (cd corpus && python3 "$here/broken_meshes.py") || { echo "FAIL: broken_meshes.py"; exit 1; }
+# The pipeline runs with a target (simplify at 0.5): simplification may remove an input's crossings
+# or slivers, and the final surface is judged (zero_area passes; the crossing boxes stay crossed).
 cat > quick.json <<'EOF'
 {"reconstruct": {"resolution": [20, 20]}, "simplify": {"ratio": 0.5}, "enhance": {"iterations": 2},
  "quality": {"distance_samples": 1000}}
@@ -75,19 +77,19 @@ duplicate_face*         simplify,smooth,enhance,pipeline   2  face 12 repeats fa
 duplicate_face*         tetrahedralize                     1  not FEM-ready
 duplicate_face*         *                                  0
 zero_area*              tetrahedralize                     1  not FEM-ready \(degenerate_faces
-zero_area*              pipeline                           1  not FEM-ready
+zero_area*              pipeline                           0
 zero_area*              *                                  0
 repeated_corner*        simplify,smooth,enhance,pipeline   2  face 12 has two corners at vertex 0
 repeated_corner*        tetrahedralize                     1  not FEM-ready \(manifold\)
 repeated_corner*        *                                  0
 isolated_vertices*      *                                  0
 self_intersecting*      tetrahedralize                     1  not FEM-ready \(self_intersections\)
-self_intersecting*      pipeline                           1  intersects itself at 18 face pairs
+self_intersecting*      pipeline                           1  not FEM-ready: [0-9]+ pairs of faces intersect
 self_intersecting*      *                                  0
 touching*.stl           simplify,smooth,enhance,pipeline   2  face 12 makes the edge [0-9]+-[0-9]+ non-manifold \(4 faces
 touching*.stl           tetrahedralize                     1  not FEM-ready
 touching*               tetrahedralize                     1  not FEM-ready \(self_intersections\)
-touching*               pipeline                           1  intersects itself
+touching*               pipeline                           1  not FEM-ready: [0-9]+ pairs of faces intersect
 touching*               *                                  0
 offset_1e9-binary.stl   simplify,smooth,enhance,pipeline   2  face 0 has two corners at vertex 0
 offset_1e9-binary.stl   tetrahedralize                     1  not FEM-ready

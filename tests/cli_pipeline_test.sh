@@ -210,6 +210,13 @@ python3 "$here/cli_meshes.py" two_boxes holed
 "$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 1 $?
 one_line "self-intersecting input" "two_boxes.off: not FEM-ready: the surface intersects itself"
 [ -z "$(ls -A out_boxes 2>/dev/null)" ] && ok || bad "files written for a self-intersecting input"
+grep -q "simplification may" err.txt && ok || bad "the refusal says which stage may remove crossings"
+# With a target, simplification runs (it may remove crossings) and the final surface is judged:
+# the boxes still cross, so not FEM-ready, exit 1, the outputs written and saying why.
+"$bin" pipeline two_boxes.off -o out_boxes_simplified --ratio 0.5 > /dev/null 2> err.txt
+expect_exit "self-intersecting input, simplified" 1 $?
+grep -q "intersect" err.txt && [ -s out_boxes_simplified/report.json ] && ok \
+  || bad "simplified self-intersecting input: the outputs and the reason"
 "$bin" pipeline holed.off -o out_holed > /dev/null 2> err.txt; expect_exit "open surface with a hole" 1 $?
 one_line "open surface with a hole" "holed.off: not FEM-ready: the surface is open"
 echo '{"tetrahedralize": {"enabled": false}}' > surface_only.json

@@ -58,10 +58,16 @@ LoadedMesh load_mesh(const std::string& path) {
 }
 
 void require_all_faces(const LoadedMesh& loaded, const std::string& stage) {
-  if (loaded.build.dropped_faces.empty()) return;
-  detail::fail(loaded.read.path, dropped_faces_problem(loaded.soup, loaded.build) + "; " + stage +
-                                     " needs a manifold, consistently oriented surface (meshprep quality lists "
-                                     "the faces)");
+  if (!loaded.build.dropped_faces.empty())
+    detail::fail(loaded.read.path, dropped_faces_problem(loaded.soup, loaded.build) + "; " + stage +
+                                       " needs a manifold, consistently oriented surface (meshprep quality lists "
+                                       "the faces)");
+  const auto has_area = [&](const Triangle& t) {
+    const std::vector<Vec3>& p = loaded.soup.points;
+    return (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).squaredNorm() > 0;
+  };
+  if (std::none_of(loaded.soup.triangles.begin(), loaded.soup.triangles.end(), has_area))
+    detail::fail(loaded.read.path, "no face has a positive area; " + stage + " needs a surface");
 }
 
 void write_mesh(const TriMesh& mesh, const std::string& path, const WriteOptions& options) {

@@ -72,6 +72,16 @@ class Run {
     result_.stages.push_back(std::move(record));
   }
 
+  // A stage's result; what it cannot take (InvalidInput) named with the input file.
+  template <class Stage>
+  auto on_input(Stage&& stage) const -> decltype(stage()) {
+    try {
+      return stage();
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(result_.input + ": " + e.what());
+    }
+  }
+
   void stop_if_cancelled() const {
     if (observer_.cancelled && observer_.cancelled()) throw Cancelled(result_.input + ": stopped");
   }
@@ -191,12 +201,15 @@ class Run {
                   std::to_string(report.self_intersections) + " self-intersecting face pairs";
     finish(std::move(record));
     if (!config_.tetrahedralize.enabled) return;
-    // What no later stage can mend is refused before any work is done.
-    if (report.self_intersections > 0)
+    // What no later stage can mend is refused before any work is done. Simplification may remove
+    // crossings (its collapses merge the crossing faces); if it runs, the final surface's
+    // readiness check judges what is left.
+    if (report.self_intersections > 0 && !simplifies())
       throw PipelineFailed(result_.input + ": not FEM-ready: the surface intersects itself at " +
                            std::to_string(report.self_intersections) +
-                           " face pairs (meshprep quality lists them), which no stage removes; switch tetrahedralize off "
-                           "to process the surface only");
+                           " face pairs (meshprep quality lists them), which the stages that run do not remove "
+                           "(simplification may: give --ratio or --target-faces); repair the surface first, or switch "
+                           "tetrahedralize off to process the surface only");
     if (!report.closed) {
       try {
         extrude_to_block(result_.input_surface, 1);
@@ -208,17 +221,23 @@ class Run {
     }
   }
 
+  // Whether the simplify stage runs: switched on, with a target (points always have one).
+  bool simplifies() const {
+    const PipelineConfig::Simplify& c = config_.simplify;
+    return c.enabled && (c.target_faces != 0 || c.ratio.has_value() || result_.from_points);
+  }
+
   void simplify_stage() {
     const PipelineConfig::Simplify& c = config_.simplify;
     if (!c.enabled) return skip("simplify", "switched off");
     const bool has_ratio = c.ratio.has_value() || result_.from_points;
-    if (c.target_faces == 0 && !has_ratio) return skip("simplify", "no target for a mesh input (give --ratio or --target-faces)");
+    if (!simplifies()) return skip("simplify", "no target for a mesh input (give --ratio or --target-faces)");
     StageRecord record = started("simplify");
     SimplifyParams params = c.params;
     params.target_faces = c.target_faces;
     params.keep_ratio = c.ratio ? *c.ratio : has_ratio ? kTerrainRatio : 1.0;
     params.progress = progress();
-    const SimplifyResult s = simplify(mesh_, params);
+    const SimplifyResult s = on_input([&] { return simplify(mesh_, params); });
     record.seconds = s.seconds;
     record.details = {{"target_faces", s.target_faces},
                       {"reached_target", s.reached_target},
@@ -235,7 +254,7 @@ class Run {
     StageRecord record = started("smooth");
     SmoothParams params = config_.smooth.params;
     params.progress = progress();
-    const SmoothResult s = smooth(mesh_, params);
+    const SmoothResult s = on_input([&] { return smooth(mesh_, params); });
     record.seconds = s.seconds;
     record.details = {{"iterations", s.iterations},
                       {"max_displacement", s.max_displacement},
@@ -251,7 +270,7 @@ class Run {
     StageRecord record = started("enhance");
     EnhanceParams params = config_.enhance.params;
     params.progress = progress();
-    const EnhanceResult e = enhance(mesh_, &result_.input_surface, params);
+    const EnhanceResult e = on_input([&] { return enhance(mesh_, &result_.input_surface, params); });
     record.seconds = e.seconds;
     record.details = {{"rounds", e.rounds},
                       {"kept_round", e.kept_round},

@@ -51,7 +51,8 @@ LoadedMesh load_mesh(const std::string& path);
 
 /// \throws InvalidInput "<path>: <why the first face was dropped>; <stage> needs a manifold,
 /// consistently oriented surface (...)" if the halfedge mesh lacks faces of the file (see
-/// dropped_faces_problem): `stage` ("simplification") cannot work on what the file holds.
+/// dropped_faces_problem): `stage` ("simplification") cannot work on what the file holds; and
+/// "<path>: no face has a positive area; <stage> needs a surface" when every face is degenerate.
 void require_all_faces(const LoadedMesh& loaded, const std::string& stage);
 
 /// A named value per point of a mesh (e.g. the surface variation sigma, see quality/surface_variation.h).
