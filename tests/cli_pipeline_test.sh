@@ -217,6 +217,9 @@ grep -q "simplification may" err.txt && ok || bad "the refusal says which stage 
 expect_exit "self-intersecting input, simplified" 1 $?
 grep -q "intersect" err.txt && [ -s out_boxes_simplified/report.json ] && ok \
   || bad "simplified self-intersecting input: the outputs and the reason"
+"$bin" simplify two_boxes.off -o boxes_simplified.off --ratio 0.5 > /dev/null 2> err.txt
+expect_exit "simplify a self-intersecting input" 0 $?
+grep -q "boxes_simplified.off still intersects itself" err.txt && ok || bad "simplify: the crossings left, on stderr"
 "$bin" pipeline holed.off -o out_holed > /dev/null 2> err.txt; expect_exit "open surface with a hole" 1 $?
 one_line "open surface with a hole" "holed.off: not FEM-ready: the surface is open"
 echo '{"tetrahedralize": {"enabled": false}}' > surface_only.json
