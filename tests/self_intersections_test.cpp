@@ -1,30 +1,10 @@
 #include "meshprep/quality/self_intersections.h"
-#include "meshprep/quality/triangle_intersection.h"
 
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
 using namespace meshprep;
-
-TEST(TriangleIntersection, CrossingAndSeparatedTriangles) {
-  // A vertical triangle piercing a horizontal one, then lifted clear of it.
-  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, -1, 0.5}));
-  EXPECT_FALSE(triangles_intersect({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0.1}, {0.5, 0.5, 1}, {1.5, -1, 0.5}));
-}
-
-TEST(TriangleIntersection, CoplanarOverlapAndTouch) {
-  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}));
-  EXPECT_FALSE(triangles_intersect({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 2, 0}, {3, 2, 0}, {2, 3, 0}));
-  // Touching at one point counts (closed triangles).
-  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {2, 0, 0}, {1, -1, 0}));
-}
-
-TEST(TriangleIntersection, SegmentThroughTriangle) {
-  EXPECT_TRUE(segment_intersects_triangle({0.2, 0.2, -1}, {0.2, 0.2, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-  EXPECT_FALSE(segment_intersects_triangle({0.8, 0.8, -1}, {0.8, 0.8, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-  EXPECT_FALSE(segment_intersects_triangle({0.2, 0.2, 0.1}, {0.2, 0.2, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-}
 
 TEST(SelfIntersections, ClosedSurfacesHaveNone) {
   EXPECT_EQ(find_self_intersections(test::cube()).count, 0u);

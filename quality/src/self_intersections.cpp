@@ -14,8 +14,7 @@ namespace meshprep {
 namespace {
 
 bool has_area(const TriangleSoup& soup, const Triangle& t) {
-  const Vec3 &a = soup.points[t[0]], &b = soup.points[t[1]], &c = soup.points[t[2]];
-  return (b - a).cross(c - a).squaredNorm() > 0;
+  return triangle_has_area(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
 }
 
 bool faces_intersect(const TriangleSoup& soup, const Triangle& a, const Triangle& b) {
