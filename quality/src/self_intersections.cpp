@@ -65,14 +65,24 @@ SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t 
   for (std::size_t f = 0; f < n; ++f) valid[f] = has_area(soup, soup.triangles[f]) ? 1 : 0;
   const TriangleBvh bvh(soup);
   // Each thread keeps the pairs it found; sorted together afterwards, whatever the threads did.
-  tbb::enumerable_thread_specific<std::vector<std::pair<std::size_t, std::size_t>>> found;
+  struct Found {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::size_t tests = 0;
+  };
+  tbb::enumerable_thread_specific<Found> found;
   bvh.for_each_overlapping_pair([&](std::size_t i, std::size_t j) {
-    if (valid[i] && valid[j] && faces_intersect(soup, soup.triangles[i], soup.triangles[j])) found.local().emplace_back(i, j);
+    if (!valid[i] || !valid[j]) return;
+    Found& local = found.local();
+    ++local.tests;
+    if (faces_intersect(soup, soup.triangles[i], soup.triangles[j])) local.pairs.emplace_back(i, j);
   });
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
-  std::sort(pairs.begin(), pairs.end());
   SelfIntersections result;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const Found& local : found) {
+    pairs.insert(pairs.end(), local.pairs.begin(), local.pairs.end());
+    result.exact_tests += local.tests;
+  }
+  std::sort(pairs.begin(), pairs.end());
   result.capped = cap > 0 && pairs.size() > cap;
   if (result.capped) pairs.resize(cap);
   result.count = pairs.size();

@@ -17,6 +17,8 @@ struct SelfIntersections {
   std::size_t count = 0;  ///< intersecting pairs found (at most the cap)
   bool capped = false;    ///< counting stopped at the cap
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  ///< the pairs (face i < face j), sorted
+  /// Face pairs the broad phase passed to the exact test: the work done.
+  std::size_t exact_tests = 0;
 };
 
 /// Find intersecting face pairs with a BVH. Degenerate faces (zero area) are skipped: they are
