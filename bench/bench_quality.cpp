@@ -1,10 +1,13 @@
 // Quality-report timings on bunny00, side by side with OpenMesh's own OFF reader as the peer
-// for reading. Run: build/bin/bench_quality (needs ../shared/data beside the clone).
+// for reading, and the self-intersection search on fans (tests/test_meshes.h). Run:
+// build/bin/bench_quality (needs ../shared/data beside the clone).
 #include "meshprep/core/io.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/topology.h"
 #include "meshprep/quality/triangle_bvh.h"
+
+#include "test_meshes.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <benchmark/benchmark.h>
@@ -56,6 +59,26 @@ void self_intersections(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(meshprep::find_self_intersections(soup));
 }
 BENCHMARK(self_intersections)->Unit(benchmark::kMillisecond);
+
+// Issue 30: one vertex's fan of long thin faces, alone or as the caps of a cylinder (argument:
+// the polygon's corners). The counter is the number of pairs given to the exact test.
+void search_and_count(benchmark::State& state, const meshprep::TriangleSoup& soup) {
+  for (auto _ : state) {
+    const meshprep::SelfIntersections found = meshprep::find_self_intersections(soup);
+    state.counters["pairs"] = static_cast<double>(found.count);
+    state.counters["exact_tests"] = static_cast<double>(found.exact_tests);
+  }
+}
+
+void self_intersections_fan(benchmark::State& state) {
+  search_and_count(state, meshprep::test::fan_triangulated_polygon(static_cast<int>(state.range(0))));
+}
+BENCHMARK(self_intersections_fan)->Arg(2000)->Arg(5000)->Arg(20000)->Unit(benchmark::kMillisecond);
+
+void self_intersections_fan_capped_cylinder(benchmark::State& state) {
+  search_and_count(state, meshprep::test::cylinder_with_fan_caps(static_cast<int>(state.range(0))));
+}
+BENCHMARK(self_intersections_fan_capped_cylinder)->Arg(2000)->Arg(6000)->Unit(benchmark::kMillisecond);
 
 void full_report(benchmark::State& state) {
   if (!have_data(state)) return;

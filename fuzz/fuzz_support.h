@@ -6,11 +6,13 @@
 /// keep the library's promises: a broken invariant aborts with a message.
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/mesh.h"
 
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
+#include <vector>
 
 namespace meshprep::fuzz {
 
@@ -23,6 +25,17 @@ inline void require(bool holds, const char* invariant) {
   if (holds) return;
   std::fprintf(stderr, "fuzz invariant broken: %s\n", invariant);
   std::abort();
+}
+
+/// The geometric targets' faces: three bytes each from `at` on (corner indices modulo
+/// `point_count`), as many as the bytes hold, at most `max_faces`.
+inline std::vector<Triangle> faces_from_bytes(const std::uint8_t* data, std::size_t size, std::size_t at,
+                                              std::size_t point_count, std::size_t max_faces) {
+  std::vector<Triangle> faces;
+  for (; at + 3 <= size && faces.size() < max_faces; at += 3)
+    faces.push_back({static_cast<std::uint32_t>(data[at] % point_count), static_cast<std::uint32_t>(data[at + 1] % point_count),
+                     static_cast<std::uint32_t>(data[at + 2] % point_count)});
+  return faces;
 }
 
 /// Runs `parse`; the library's documented errors mean a refused input, anything else escapes.

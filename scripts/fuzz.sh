@@ -5,14 +5,15 @@
 # target and fails if any found a crash, a leak, an input slower than 10 s or one needing more than
 # 2 GB; the input is kept in build-fuzz/artifacts/TARGET/ (replay it: build-fuzz/bin/fuzz_TARGET FILE).
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]
-#   (targets: off obj ply stl xyz, the tet mesh readers msh vtu vtk medit tetgen, config)
+#   (targets: off obj ply stl xyz, the tet mesh readers msh vtu vtk medit tetgen, config, and the
+#   geometric stages on tiny decoded meshes self_intersections simplify)
 # FUZZ_BUILD_DIR=DIR uses an existing fuzzer build (MESHPREP_BUILD_FUZZERS=ON) instead of build-fuzz/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(off obj ply stl xyz msh vtu vtk medit tetgen config)
+[ ${#targets[@]} -gt 0 ] || targets=(off obj ply stl xyz msh vtu vtk medit tetgen config self_intersections simplify)
 build=${FUZZ_BUILD_DIR:-build-fuzz}  # scripts/run-tests.sh points it at its sanitizer build
 
 if ! grep -q '^MESHPREP_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
@@ -27,7 +28,7 @@ trap 'rm -rf "$scratch"' EXIT
 # The value of libFuzzer's final statistic $1 in log $2 (-print_final_stats=1), or "-" if the run died first.
 stat() { sed -n "s/^stat::$1: *//p" "$2" | tail -n 1 | grep . || echo -; }
 
-printf '%-7s %12s %8s %9s %10s %7s %8s\n' target executions seconds exec/s new_units corpus crashes
+printf '%-18s %12s %8s %9s %10s %7s %8s\n' target executions seconds exec/s new_units corpus crashes
 failed=()
 for target in "${targets[@]}"; do
   cp -r "fuzz/corpus/$target" "$scratch/$target"
@@ -36,10 +37,12 @@ for target in "${targets[@]}"; do
   log="$build/fuzz-$target.log"
   start=$(date +%s)
   status=0
-  "$build/bin/fuzz_$target" "$scratch/$target" -dict="fuzz/$target.dict" -max_total_time="$seconds" -timeout=10 \
+  dictionary=()  # the readers' keywords; the geometric targets decode numbers and have none
+  [ ! -f "fuzz/$target.dict" ] || dictionary=(-dict="fuzz/$target.dict")
+  "$build/bin/fuzz_$target" "$scratch/$target" "${dictionary[@]}" -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1 || status=$?
   crashes=$(find "$artifacts" -type f | wc -l)
-  printf '%-7s %12s %8s %9s %10s %7s %8s\n' "$target" "$(stat number_of_executed_units "$log")" \
+  printf '%-18s %12s %8s %9s %10s %7s %8s\n' "$target" "$(stat number_of_executed_units "$log")" \
     "$(($(date +%s) - start))" "$(stat average_exec_per_sec "$log")" "$(stat new_units_added "$log")" \
     "$(find "$scratch/$target" -type f | wc -l)" "$crashes"
   if [ "$status" -ne 0 ] || [ "$crashes" -ne 0 ]; then failed+=("$target"); fi

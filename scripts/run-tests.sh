@@ -4,7 +4,9 @@
 #   2. ASan + UBSan (clang, Debug at -O1 -g1, with libFuzzer's instrumentation, warnings are
 #      errors) into build-sanitize/: the readers' and the quality module's tests (meshprep_tests),
 #      then each reader's fuzz target 10 s on its seeds: the surface readers and the tet mesh
-#      readers (compiled alone, without the rest of meshprep::fem: ~40 s more to build, 50 s to run).
+#      readers (compiled alone, without the rest of meshprep::fem: ~40 s more to build, 50 s to run),
+#      and the two geometric stages on tiny decoded meshes, 10 s each: the self-intersection search
+#      against its exact reference, and simplify (meshprep::preprocess under the sanitizers).
 # The second pass is kept to the modules every input goes through first, so that both passes fit
 # CI's 15-minute budget on 2 cores (a sanitizer build of everything takes ~12 minutes there).
 # `--sanitize-all` builds everything under the sanitizers and runs every test and fuzz target.
@@ -30,7 +32,8 @@ if [ "$mode" = --sanitize-all ]; then
   FUZZ_BUILD_DIR=build-sanitize bash scripts/fuzz.sh 10
 else
   readers=(off obj ply stl xyz msh vtu vtk medit tetgen)
-  cmake --build build-sanitize -j "$jobs" --target meshprep_tests "${readers[@]/#/fuzz_}"
+  stages=(self_intersections simplify)
+  cmake --build build-sanitize -j "$jobs" --target meshprep_tests "${readers[@]/#/fuzz_}" "${stages[@]/#/fuzz_}"
   build-sanitize/bin/meshprep_tests --gtest_brief=1
-  FUZZ_BUILD_DIR=build-sanitize bash scripts/fuzz.sh 10 "${readers[@]}"
+  FUZZ_BUILD_DIR=build-sanitize bash scripts/fuzz.sh 10 "${readers[@]}" "${stages[@]}"
 fi

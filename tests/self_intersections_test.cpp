@@ -1,30 +1,10 @@
 #include "meshprep/quality/self_intersections.h"
-#include "meshprep/quality/triangle_intersection.h"
 
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
 using namespace meshprep;
-
-TEST(TriangleIntersection, CrossingAndSeparatedTriangles) {
-  // A vertical triangle piercing a horizontal one, then lifted clear of it.
-  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, -1, 0.5}));
-  EXPECT_FALSE(triangles_intersect({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0.1}, {0.5, 0.5, 1}, {1.5, -1, 0.5}));
-}
-
-TEST(TriangleIntersection, CoplanarOverlapAndTouch) {
-  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}));
-  EXPECT_FALSE(triangles_intersect({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 2, 0}, {3, 2, 0}, {2, 3, 0}));
-  // Touching at one point counts (closed triangles).
-  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {2, 0, 0}, {1, -1, 0}));
-}
-
-TEST(TriangleIntersection, SegmentThroughTriangle) {
-  EXPECT_TRUE(segment_intersects_triangle({0.2, 0.2, -1}, {0.2, 0.2, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-  EXPECT_FALSE(segment_intersects_triangle({0.8, 0.8, -1}, {0.8, 0.8, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-  EXPECT_FALSE(segment_intersects_triangle({0.2, 0.2, 0.1}, {0.2, 0.2, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-}
 
 TEST(SelfIntersections, ClosedSurfacesHaveNone) {
   EXPECT_EQ(find_self_intersections(test::cube()).count, 0u);
@@ -74,4 +54,34 @@ TEST(SelfIntersections, CapStopsCounting) {
   const SelfIntersections capped = find_self_intersections(s, 5);
   EXPECT_EQ(capped.count, 5u);
   EXPECT_TRUE(capped.capped);
+}
+
+// Issue 30: the broad phase passed every pair of a vertex's fan to the exact test, because their
+// boxes all overlap at the vertex (a fan of 20,000 corners took over 120 s; a cylinder whose caps
+// are fans of 6,000 corners, 24 k faces, 24 s). The exact tests must grow with the faces.
+TEST(SelfIntersections, FansCostExactTestsInProportionToTheirFaces) {
+  const TriangleSoup fan = test::fan_triangulated_polygon(20000);
+  const SelfIntersections in_fan = find_self_intersections(fan);
+  EXPECT_EQ(in_fan.count, 0u);
+  EXPECT_LT(in_fan.exact_tests, 2 * fan.triangles.size());  // was n^2 / 2
+
+  const TriangleSoup cylinder = test::cylinder_with_fan_caps(6000);
+  const SelfIntersections in_cylinder = find_self_intersections(cylinder);
+  EXPECT_EQ(in_cylinder.count, 0u);
+  EXPECT_LT(in_cylinder.exact_tests, 5 * cylinder.triangles.size());
+}
+
+// What the fans' broad phase skips must not hide a crossing: one far corner pulled across the
+// fan makes its two faces overlap others that have only the fan's corner in common with them; two
+// neighbouring corners pulled there, one above and one below the plane, make an edge that pierces
+// such a face.
+TEST(SelfIntersections, CornersPulledAcrossAFanAreFound) {
+  TriangleSoup fan = test::fan_triangulated_polygon(200);
+  fan.points[50] = {-0.5, -0.2, 0};
+  const SelfIntersections flat = find_self_intersections(fan);
+  EXPECT_GT(flat.count, 0u);
+  EXPECT_LT(flat.exact_tests, 2 * fan.triangles.size());
+  fan.points[50].z() = 0.25;
+  fan.points[49] = {-0.5, -0.2, -0.25};
+  EXPECT_GT(find_self_intersections(fan).count, 0u);
 }

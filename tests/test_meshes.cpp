@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <utility>
 
 namespace meshprep::test {
 
@@ -80,6 +81,30 @@ TriangleSoup grid(int n, double z0) {
       s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
+  return s;
+}
+
+TriangleSoup fan_triangulated_polygon(int corners) {
+  TriangleSoup s;
+  for (int i = 0; i < corners; ++i) {
+    const double angle = 2 * M_PI * i / corners;
+    s.points.push_back({std::cos(angle), std::sin(angle), 0});
+  }
+  for (std::uint32_t i = 1; i + 1 < static_cast<std::uint32_t>(corners); ++i) s.triangles.push_back({0, i, i + 1});
+  return s;
+}
+
+TriangleSoup cylinder_with_fan_caps(int corners) {
+  const TriangleSoup cap = fan_triangulated_polygon(corners);
+  TriangleSoup s = merged(cap, translated(cap, {0, 0, 1}));
+  const auto n = static_cast<std::uint32_t>(corners);
+  for (Triangle& t : s.triangles)
+    if (t[0] == 0) std::swap(t[1], t[2]);  // the bottom cap faces down
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    s.triangles.push_back({i, j, n + j});
+    s.triangles.push_back({i, n + j, n + i});
+  }
   return s;
 }
 

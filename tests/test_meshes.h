@@ -24,6 +24,14 @@ TriangleSoup grid(int n, double z0 = 0.0);
 /// and corners shared by the sides, faces oriented outwards (closed, genus 0).
 TriangleSoup subdivided_cube(int n);
 
+/// The regular polygon with `corners` corners on the unit circle (z = 0), fan-triangulated from
+/// its first corner: corners - 2 long thin triangles that all have that corner.
+TriangleSoup fan_triangulated_polygon(int corners);
+
+/// A closed cylinder of radius 1 and height 1 whose caps are such fans (from the same corner) and
+/// whose side is one ring of quads split in two: 4 corners - 4 faces.
+TriangleSoup cylinder_with_fan_caps(int corners);
+
 /// `soup` translated by t.
 TriangleSoup translated(TriangleSoup soup, const Vec3& t);
 

@@ -3,19 +3,26 @@
 #include "meshprep/quality/triangle_bvh.h"
 #include "meshprep/quality/triangle_intersection.h"
 
+#include "neighbour_pairs.h"
+#include "plane_separation.h"
 #include "robust_predicates.h"
 
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <array>
 #include <utility>
 
 namespace meshprep {
 namespace {
 
 bool has_area(const TriangleSoup& soup, const Triangle& t) {
-  const Vec3 &a = soup.points[t[0]], &b = soup.points[t[1]], &c = soup.points[t[2]];
-  return (b - a).cross(c - a).squaredNorm() > 0;
+  return triangle_has_area(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
+}
+
+std::array<Vec3, 3> corners(const TriangleSoup& soup, std::size_t f) {
+  const Triangle& t = soup.triangles[f];
+  return {soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]};
 }
 
 bool faces_intersect(const TriangleSoup& soup, const Triangle& a, const Triangle& b) {
@@ -64,16 +71,31 @@ SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t 
   detail::reset_robust_predicates();  // before the parallel section: TetGen may have changed them
   std::vector<char> valid(n);
   for (std::size_t f = 0; f < n; ++f) valid[f] = has_area(soup, soup.triangles[f]) ? 1 : 0;
-  const TriangleBvh bvh(soup);
   // Each thread keeps the pairs it found; sorted together afterwards, whatever the threads did.
-  tbb::enumerable_thread_specific<std::vector<std::pair<std::size_t, std::size_t>>> found;
-  bvh.for_each_overlapping_pair([&](std::size_t i, std::size_t j) {
-    if (valid[i] && valid[j] && faces_intersect(soup, soup.triangles[i], soup.triangles[j])) found.local().emplace_back(i, j);
+  struct Found {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::size_t tests = 0;
+  };
+  tbb::enumerable_thread_specific<Found> found;
+  auto test = [&](std::size_t i, std::size_t j) {
+    Found& local = found.local();
+    ++local.tests;
+    if (faces_intersect(soup, soup.triangles[i], soup.triangles[j])) local.pairs.emplace_back(i, j);
+  };
+  // Faces with corners in common around each vertex; the others by their boxes.
+  detail::for_each_neighbour_pair(soup, valid, test);
+  // Boxes overlap far more often than the triangles' planes let them meet (long thin triangles
+  // have large boxes): the certain cases are settled in floating point, before the exact test.
+  TriangleBvh(soup).for_each_overlapping_pair_apart([&](std::size_t i, std::size_t j) {
+    if (valid[i] && valid[j] && !detail::certainly_separated_by_a_plane(corners(soup, i), corners(soup, j))) test(i, j);
   });
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
-  std::sort(pairs.begin(), pairs.end());
   SelfIntersections result;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const Found& local : found) {
+    pairs.insert(pairs.end(), local.pairs.begin(), local.pairs.end());
+    result.exact_tests += local.tests;
+  }
+  std::sort(pairs.begin(), pairs.end());
   result.capped = cap > 0 && pairs.size() > cap;
   if (result.capped) pairs.resize(cap);
   result.count = pairs.size();

@@ -20,6 +20,32 @@ std::uint32_t subtree_nodes(std::uint32_t m) {
   return m <= kLeafSize ? 1 : 1 + subtree_nodes(m / 2) + subtree_nodes(m - m / 2);
 }
 
+using Corners = std::array<std::uint32_t, 3>;
+
+// The point indices of `t`, ascending, each once, padded with `none` (the largest value).
+Corners sorted_corners(const Triangle& t, std::uint32_t none) {
+  Corners c{t[0], t[1], t[2]};
+  std::sort(c.begin(), c.end());
+  if (c[2] == c[1]) c[2] = none;
+  if (c[1] == c[0]) c[1] = c[2], c[2] = none;
+  return c;
+}
+
+// The values both ascending lists hold, ascending, padded with `none`.
+Corners common_corners(const Corners& a, const Corners& b, std::uint32_t none) {
+  Corners both{none, none, none};
+  std::set_intersection(a.begin(), std::find(a.begin(), a.end(), none), b.begin(), std::find(b.begin(), b.end(), none),
+                        both.begin());
+  return both;
+}
+
+bool triangles_share_a_corner(const Triangle& a, const Triangle& b) {
+  for (auto u : a)
+    for (auto v : b)
+      if (u == v) return true;
+  return false;
+}
+
 }  // namespace
 
 Box3 bounding_box(const TriangleSoup& soup) {
@@ -89,7 +115,11 @@ std::uint32_t TriangleBvh::build(std::uint32_t index, std::uint32_t begin, std::
   Node& node = nodes_[index];
   if (end - begin <= kLeafSize) {
     node.box.setEmpty();
-    for (std::uint32_t i = begin; i < end; ++i) node.box.extend(boxes_[order_[i]]);
+    node.common = sorted_corners(soup_.triangles[order_[begin]], kNoCorner);
+    for (std::uint32_t i = begin; i < end; ++i) {
+      node.box.extend(boxes_[order_[i]]);
+      node.common = common_corners(node.common, sorted_corners(soup_.triangles[order_[i]], kNoCorner), kNoCorner);
+    }
     node.first = begin;
     node.count = end - begin;
     return index + 1;
@@ -114,6 +144,7 @@ std::uint32_t TriangleBvh::build(std::uint32_t index, std::uint32_t begin, std::
     next = build(node.right, mid, end, centroids, depth + 1);
   }
   node.box = nodes_[node.left].box.merged(nodes_[node.right].box);
+  node.common = common_corners(nodes_[node.left].common, nodes_[node.right].common, kNoCorner);
   return next;
 }
 
@@ -201,16 +232,18 @@ void TriangleBvh::for_each_overlapping(const Box3& box, const std::function<void
   }
 }
 
-void TriangleBvh::for_each_overlapping_pair(const std::function<void(std::size_t, std::size_t)>& visit) const {
+void TriangleBvh::for_each_overlapping_pair_apart(const std::function<void(std::size_t, std::size_t)>& visit) const {
   if (!nodes_.empty()) overlapping_pairs(0, 0, 0, visit);
 }
 
-// The pairs of node a and node b (a == b: the pairs within one node). Node pairs whose boxes are
-// apart are dropped whole; the larger node is split first.
+// The pairs of node a and node b (a == b: the pairs within one node) that have no corner in
+// common. Node pairs whose boxes are apart, or whose triangles all have one corner, are dropped
+// whole; the larger node is split first.
 void TriangleBvh::overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
                                     const std::function<void(std::size_t, std::size_t)>& visit) const {
   const Node& x = nodes_[a];
   const Node& y = nodes_[b];
+  if (common_corners(x.common, y.common, kNoCorner)[0] != kNoCorner) return;
   auto both = [&](auto first, auto second) {
     if (depth < kParallelDepth) tbb::parallel_invoke(first, second);
     else {
@@ -218,11 +251,15 @@ void TriangleBvh::overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
       second();
     }
   };
+  auto visit_if_apart = [&](std::uint32_t i, std::uint32_t j) {
+    const std::uint32_t fi = order_[i], fj = order_[j];
+    if (boxes_[fi].intersects(boxes_[fj]) && !triangles_share_a_corner(soup_.triangles[fi], soup_.triangles[fj]))
+      visit(std::min(fi, fj), std::max(fi, fj));
+  };
   if (a == b) {
     if (x.count > 0) {
       for (std::uint32_t i = x.first; i < x.first + x.count; ++i)
-        for (std::uint32_t j = i + 1; j < x.first + x.count; ++j)
-          if (boxes_[order_[i]].intersects(boxes_[order_[j]])) visit(std::min(order_[i], order_[j]), std::max(order_[i], order_[j]));
+        for (std::uint32_t j = i + 1; j < x.first + x.count; ++j) visit_if_apart(i, j);
       return;
     }
     both([&] { overlapping_pairs(x.left, x.left, depth + 1, visit); },
@@ -235,8 +272,7 @@ void TriangleBvh::overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
   if (!x.box.intersects(y.box)) return;
   if (x.count > 0 && y.count > 0) {
     for (std::uint32_t i = x.first; i < x.first + x.count; ++i)
-      for (std::uint32_t j = y.first; j < y.first + y.count; ++j)
-        if (boxes_[order_[i]].intersects(boxes_[order_[j]])) visit(std::min(order_[i], order_[j]), std::max(order_[i], order_[j]));
+      for (std::uint32_t j = y.first; j < y.first + y.count; ++j) visit_if_apart(i, j);
     return;
   }
   // Split the node that is not a leaf, the larger (by box volume) if neither is.

@@ -17,10 +17,15 @@ struct SelfIntersections {
   std::size_t count = 0;  ///< intersecting pairs found (at most the cap)
   bool capped = false;    ///< counting stopped at the cap
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  ///< the pairs (face i < face j), sorted
+  /// Face pairs the broad phase passed to the exact test: the work done, which grows with the
+  /// number of faces (a few per face on a fine mesh), not with the square of a vertex's valence.
+  std::size_t exact_tests = 0;
 };
 
-/// Find intersecting face pairs with a BVH. Degenerate faces (zero area) are skipped: they are
-/// reported as degenerate, not as intersections. Stops after `cap` pairs (0 = no limit).
+/// Find intersecting face pairs: faces with corners in common by the directions they cover around
+/// each vertex, the others with a BVH and a certified floating-point plane test; then the exact
+/// test (triangle_intersection.h). Degenerate faces (zero area) are skipped: they are reported as
+/// degenerate, not as intersections. Stops after `cap` pairs (0 = no limit).
 SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t cap = 0);
 
 }  // namespace meshprep
