@@ -6,10 +6,11 @@
 #   simplify_and_enhance  the written surface within 1 % of the target faces, fewer faces under
 #                         20 degrees than the input, Hausdorff distance under 1.5 % of the diagonal
 #   quality_report        the JSON parses and holds the file's face count, the HTML page is whole
-# and, for each, a missing input is refused with exit 2.
-# Usage: examples_test.sh NAME BINARY DATA_DIR
+# and, for each, a missing input is refused with exit 2, and every figure of its row in the
+# README's example table (but the times) is what the run printed, at the README's precision.
+# Usage: examples_test.sh NAME BINARY DATA_DIR README
 set -uo pipefail
-name=$1 bin=$2 data=$3
+name=$1 bin=$2 data=$3 readme=$4
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -29,6 +30,7 @@ faces = int(re.search(r"simplified to (\d+) faces", out).group(1))
 assert abs(faces - 4000) <= 40, f"{faces} faces, target 4000"
 tets, volume, inverted = re.search(r"tets (\d+), volume (\S+), inverted (\d+)", out).groups()
 assert int(inverted) == 0, out
+assert float(re.search(r"min dihedral (\S+) deg", out).group(1)) >= 10, out  # the verdict's threshold
 
 # Gmsh 4.1 ASCII: blocks of nodes (tags, then coordinates) and of elements (type 4 = tet).
 lines = iter(open(sys.argv[2]).read().split("\n"))
@@ -96,3 +98,29 @@ PY
   ;;
 *) fail "unknown example" ;;
 esac
+
+# The README's row for this example: each figure in its last column (not the times, "N s") must be
+# a number the run printed, rounded as the README writes it (10.7 % for 10.7079, 1.35e-2 for
+# 0.0135233, 84,088 for 84088).
+python3 - "$readme" "$name" out.txt <<'PY' || fail "the README's example table differs from the run"
+import re, sys
+readme, name, out = open(sys.argv[1]).read(), sys.argv[2], open(sys.argv[3]).read()
+row = next(line for line in readme.split("\n") if line.startswith(f"| `{name}` |"))
+cell = row.rstrip(" |").split(" | ")[-1]
+printed = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?", out)]
+def matches(token):
+    digits = token.replace(",", "")
+    value = float(digits)
+    if "e" in digits:
+        mantissa = digits.split("e")[0]
+        places = len(mantissa.split(".")[1]) if "." in mantissa else 0
+        return any(f"{x:.{places}e}" == f"{value:.{places}e}" for x in printed)
+    places = len(digits.split(".")[1]) if "." in digits else 0
+    return any(round(x, places) == round(value, places) for x in printed)
+missing = []
+for m in re.finditer(r"(?<![\w.])(\d[\d,]*(?:\.\d+)?(?:e-?\d+)?)(?![\w.])(\s*s\b)?", cell):
+    if m.group(2) is None and not matches(m.group(1)):
+        missing.append(m.group(1))
+assert not missing, f"README figures not printed by the run: {missing} (row: {cell})"
+print(f"{name}: the README's figures match the run: {cell}")
+PY
