@@ -1,5 +1,6 @@
-// meshprep convert IN OUT [--binary] [--msh-version 4.1|2.2]: between the surface formats, or
-// between the tet mesh formats, without changing the mesh.
+// meshprep convert IN -o OUT [--binary] [--msh-version 4.1|2.2] [--json FILE|-]: between the
+// surface formats, or between the tet mesh formats, without changing the mesh. (OUT may also come
+// second, as before -o was added.)
 #include "cli_common.h"
 #include "tet_report.h"
 
@@ -17,9 +18,19 @@ namespace meshprep::cli {
 namespace {
 
 struct ConvertOptions {
-  std::string input, output, msh_version = "4.1";
+  std::string input, output, json, msh_version = "4.1";
   bool binary = false;
 };
+
+// The line on stdout (unless the JSON goes there) and the JSON file.
+void report(const ConvertOptions& o, const nlohmann::ordered_json& counts, const std::string& line) {
+  nlohmann::ordered_json json;
+  json["input"] = o.input;
+  json["output"] = o.output;
+  json.update(counts);
+  if (!o.json.empty()) emit_json(json, o.json);
+  if (o.json != "-") std::cout << o.input << " -> " << o.output << ": " << line << '\n';
+}
 
 // The files a TetGen path stands for (.node, .ele, .face), or the path alone.
 std::vector<std::string> files_of(const std::string& path) {
@@ -51,8 +62,10 @@ int convert_tet_mesh(const ConvertOptions& o) {
   options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
   options.binary = o.binary;
   write_naming_both(o, [&] { write_tet_mesh(mesh, o.output, options); });
-  std::cout << o.input << " -> " << o.output << ": " << mesh.points.size() << " points, " << mesh.tets.size()
-            << " tets, " << mesh.boundary_faces.size() << " boundary faces\n";
+  report(o, {{"kind", "tets"}, {"points", mesh.points.size()}, {"tets", mesh.tets.size()},
+             {"boundary_faces", mesh.boundary_faces.size()}},
+         std::to_string(mesh.points.size()) + " points, " + std::to_string(mesh.tets.size()) + " tets, " +
+             std::to_string(mesh.boundary_faces.size()) + " boundary faces");
   return kSuccess;
 }
 
@@ -63,10 +76,11 @@ int convert_surface(const ConvertOptions& o) {
   WriteOptions options;
   options.binary = o.binary;
   write_naming_both(o, [&] { write_soup(soup, o.output, options); });
-  std::cout << o.input << " -> " << o.output << ": " << soup.points.size() << " vertices, " << soup.triangles.size()
-            << " triangles";
-  if (read.polygons_triangulated > 0) std::cout << " (" << read.polygons_triangulated << " polygons triangulated)";
-  std::cout << '\n';
+  std::string line = std::to_string(soup.points.size()) + " vertices, " + std::to_string(soup.triangles.size()) + " triangles";
+  if (read.polygons_triangulated > 0) line += " (" + std::to_string(read.polygons_triangulated) + " polygons triangulated)";
+  report(o, {{"kind", "surface"}, {"vertices", soup.points.size()}, {"triangles", soup.triangles.size()},
+             {"polygons_triangulated", read.polygons_triangulated}},
+         line);
   return kSuccess;
 }
 
@@ -78,12 +92,18 @@ Action add_convert_command(CLI::App& app) {
                                      "Convert a surface mesh between OFF, OBJ, PLY and STL, or a tet mesh from .msh .vtu .vtk "
                                      ".mesh .node to those and .inp (format from the extension)");
   cmd->add_option("input", o->input, "Input surface or tet mesh (a TetGen mesh by its .node or .ele)")->required();
-  cmd->add_option("output", o->output, "Output mesh of the same kind")->required();
+  auto* output = cmd->add_option("-o,--output", o->output, "Output mesh of the same kind");
+  cmd->add_option("output", o->output, "The output, as the second argument instead of -o")->excludes(output);
   cmd->add_flag("--binary", o->binary, "Binary PLY/STL/.msh instead of ASCII");
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for a .msh output")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();
-  return [o] { return is_tet_mesh_path(o->input) ? convert_tet_mesh(*o) : convert_surface(*o); };
+  cmd->add_option("--json", o->json, "Write what was converted (counts) as JSON (- for standard output)");
+  return [o] {
+    if (o->output.empty()) throw InvalidInput("convert: give the output file with -o OUT");
+    ensure_not_input(o->json, o->input);
+    return is_tet_mesh_path(o->input) ? convert_tet_mesh(*o) : convert_surface(*o);
+  };
 }
 
 }  // namespace meshprep::cli

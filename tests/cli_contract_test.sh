@@ -135,7 +135,12 @@ cp tet.off keep.off
 "$bin" quality keep.off --json keep.off > /dev/null 2> err.txt; check "json over input" 2 $?
 cmp -s tet.off keep.off && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: input modified"; }
 "$bin" convert tet.off out/tet.ply --binary > /dev/null 2> err.txt; check "convert to binary ply" 0 $?
-"$bin" convert out/tet.ply out/tet.stl > /dev/null 2> err.txt; check "convert to stl" 0 $?
+"$bin" convert out/tet.ply -o out/tet.stl --json out/convert.json > /dev/null 2> err.txt; check "convert -o to stl" 0 $?
+python3 -c "
+import json; j = json.load(open('out/convert.json')); assert j['kind'] == 'surface' and j['triangles'] == 4, j" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: convert --json"; }
+"$bin" convert out/tet.ply > /dev/null 2> err.txt; check "convert without an output" 2 $?
+expect_error "convert without an output message" "give the output file with -o OUT"
 "$bin" quality out/tet.stl --json out/rt.json > /dev/null 2> err.txt; check "quality of converted" 0 $?
 python3 -c "
 import json; j = json.load(open('out/rt.json')); assert j['faces'] == 4 and j['closed'] and abs(j['volume'] - 1/3) < 1e-6, j" \
