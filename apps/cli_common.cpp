@@ -6,6 +6,8 @@
 #include "meshprep/quality/number_format.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -20,11 +22,78 @@ void emit_json(const nlohmann::ordered_json& json, const std::string& target) {
   write_file_atomically(target, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
 }
 
-void ensure_not_input(const std::string& output, const std::string& input) {
-  if (output.empty() || input.empty() || output == "-") return;
+namespace {
+
+namespace fs = std::filesystem;
+
+// Whether two paths name one file: the same file on disk (also through a hard link), or the same
+// place once symlinks and ".." are resolved (for files yet to be written).
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec, ec_b;
+  if (fs::equivalent(a, b, ec)) return true;
+  const fs::path place_a = fs::weakly_canonical(fs::absolute(a), ec), place_b = fs::weakly_canonical(fs::absolute(b), ec_b);
+  return !ec && !ec_b && place_a == place_b;
+}
+
+bool is_character_device(const std::string& path) {
   std::error_code ec;
-  if (output == input || std::filesystem::equivalent(output, input, ec))
-    throw InvalidInput(output + ": output would overwrite the input file");
+  return fs::is_character_file(path, ec);
+}
+
+}  // namespace
+
+std::vector<std::string> files_of(const std::string& path) {
+  const std::string extension = extension_of(path);
+  if (extension != "node" && extension != "ele") return {path};
+  std::vector<std::string> files;
+  for (const char* sibling : {".node", ".ele", ".face"}) files.push_back(fs::path(path).replace_extension(sibling).string());
+  return files;
+}
+
+void ensure_distinct_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+  const auto expanded = [](const std::vector<std::string>& paths) {
+    std::vector<std::string> files;
+    for (const std::string& path : paths)
+      if (!path.empty() && path != "-")
+        for (const std::string& file : files_of(path)) files.push_back(file);
+    return files;
+  };
+  const std::vector<std::string> input_files = expanded(inputs), output_files = expanded(outputs);
+  for (std::size_t i = 0; i < output_files.size(); ++i) {
+    const std::string& output = output_files[i];
+    for (const std::string& input : input_files)
+      if (same_file(output, input)) throw InvalidInput(output + ": output would overwrite the input file " + input);
+    for (std::size_t j = 0; j < i; ++j)
+      if (same_file(output, output_files[j]) && !is_character_device(output))
+        throw InvalidInput(output + ": two outputs would be the same file (also given as " + output_files[j] +
+                           "); give each output its own file");
+  }
+}
+
+void refuse_non_finite_numbers(CLI::App& app) {
+  const auto refuse = [](bool infinity_allowed) {
+    return CLI::Validator(
+        [infinity_allowed](std::string& value) {
+          char* end = nullptr;
+          const double number = std::strtod(value.c_str(), &end);
+          if (end == value.c_str() || *end != '\0') return std::string();  // not a number: the conversion says so
+          if (std::isnan(number)) return "expected a number, not '" + value + "'";
+          if (std::isinf(number) && !infinity_allowed) return "expected a finite number, not '" + value + "'";
+          return std::string();
+        },
+        "");  // no description: the help keeps showing the range
+  };
+  for (CLI::App* command : app.get_subcommands({}))
+    for (CLI::Option* option : command->get_options()) {
+      if (option->get_type_name().rfind("FLOAT", 0) != 0) continue;
+      bool infinity_allowed = true;
+      try {
+        option->get_validator(kInfinityMeaningful);
+      } catch (const CLI::OptionNotFound&) {
+        infinity_allowed = false;
+      }
+      option->check(refuse(infinity_allowed));
+    }
 }
 
 void add_samples_option(CLI::App& cmd, std::size_t& samples) {

@@ -19,7 +19,7 @@
 namespace meshprep::cli {
 
 /// Exit codes of the CLI contract.
-enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2, kInterrupted = 130 };
+enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2 };  // a signal: 128 + its number (interrupt.h)
 
 /// The work could not be done (exit 1), with the reason.
 class WorkFailed : public std::runtime_error {
@@ -30,14 +30,32 @@ class WorkFailed : public std::runtime_error {
 /// Write `json` to `target`: "-" is stdout, anything else a file written atomically.
 void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 
-/// \throws InvalidInput if `output` names the same file as `input` (outputs never clobber inputs).
-void ensure_not_input(const std::string& output, const std::string& input);
+/// The files a mesh path stands for: TetGen's .node or .ele stands for its .node, .ele and .face;
+/// any other path for itself.
+std::vector<std::string> files_of(const std::string& path);
+
+/// Checks the files of a run before any work: no output may be an input (outputs never clobber
+/// inputs) nor another output (`-o X --json X` would leave the JSON alone in X). Paths are compared
+/// as the files they name (symlinks, `..` and hard links resolved; files_of expanded); empty paths
+/// and "-" (stdout) are skipped, and so is a character device named twice (`/dev/null`).
+/// \throws InvalidInput naming the file and its two roles.
+void ensure_distinct_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
 
 /// \throws WorkFailed if `output` (a report against the input) has more self-intersecting face
 /// pairs than the input had, naming the first pair and what to try instead; when it has as many or
 /// fewer but some, says so on stderr (the output is still written: the input had them).
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
+
+/// The name of a validator that marks a floating option for which infinity is meaningful
+/// (--smoothing inf: the least-squares limit); refuse_non_finite_numbers leaves such an option alone.
+inline const std::string kInfinityMeaningful = "infinity is meaningful";
+
+/// Makes every floating option of every subcommand of `app` refuse NaN and infinities (exit 2 at
+/// parsing): a NaN passes CLI11's Range (its comparisons are false) and then silently disables the
+/// bound or guard it sets. Options whose validator is named kInfinityMeaningful still take inf (never
+/// NaN). Called once, after every subcommand is registered, so that no flag is forgotten.
+void refuse_non_finite_numbers(CLI::App& app);
 
 /// Registers --samples on `cmd`: the random samples per direction behind the distances of the
 /// report (QualityParams::distance_samples), bound to `samples`.

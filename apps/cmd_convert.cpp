@@ -9,7 +9,6 @@
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/import.h"
 
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -33,15 +32,6 @@ void report(const ConvertOptions& o, const nlohmann::ordered_json& counts, const
 }
 
 // The files a TetGen path stands for (.node, .ele, .face), or the path alone.
-std::vector<std::string> files_of(const std::string& path) {
-  const std::string extension = extension_of(path);
-  if (extension != "node" && extension != "ele") return {path};
-  std::vector<std::string> files;
-  for (const char* sibling : {".node", ".ele", ".face"})
-    files.push_back(std::filesystem::path(path).replace_extension(sibling).string());
-  return files;
-}
-
 // A format cannot hold what the input has (e.g. a tet mesh to a surface format): name both.
 template <class Write>
 void write_naming_both(const ConvertOptions& o, Write write) {
@@ -53,8 +43,7 @@ void write_naming_both(const ConvertOptions& o, Write write) {
 }
 
 int convert_tet_mesh(const ConvertOptions& o) {
-  for (const std::string& output : files_of(o.output))
-    for (const std::string& input : files_of(o.input)) ensure_not_input(output, input);
+  ensure_distinct_files({o.input}, {o.output});
   TetReadReport read;
   const TetMesh mesh = read_tet_mesh(o.input, &read);
   note_read_changes(read);
@@ -70,7 +59,7 @@ int convert_tet_mesh(const ConvertOptions& o) {
 }
 
 int convert_surface(const ConvertOptions& o) {
-  ensure_not_input(o.output, o.input);
+  ensure_distinct_files({o.input}, {o.output});
   ReadReport read;
   const TriangleSoup soup = read_soup(o.input, &read);
   WriteOptions options;

@@ -37,12 +37,7 @@ nlohmann::ordered_json tail_json(const QualityTail& tail) {
 
 int run_enhance(EnhanceOptions o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_not_input(o.output, o.input);
-  ensure_not_input(o.json, o.input);
-  if (!o.reference.empty()) {
-    ensure_not_input(o.output, o.reference);
-    ensure_not_input(o.json, o.reference);
-  }
+  ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "enhancement");
   std::unique_ptr<TriangleSoup> reference;

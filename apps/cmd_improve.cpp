@@ -35,9 +35,7 @@ void print_quality(const char* label, const TetQualityReport& q) {
 
 int run_improve(const ImproveOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_not_input(o.output, o.input);
-  ensure_not_input(o.json, o.input);
-  if (!o.json.empty() && o.json != "-") ensure_not_input(o.json, o.output);
+  ensure_distinct_files({o.input}, {o.output, o.json});
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
   if (!is_tet_mesh_path(o.input))
     throw InvalidInput(o.input + ": not a tet mesh file (.msh .vtu .vtk .mesh .node .ele); for a surface use "
@@ -56,7 +54,7 @@ int run_improve(const ImproveOptions& o) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(o.input + ": " + e.what());  // tets that overlap, a face of three tets
   } catch (const Cancelled&) {
-    throw Cancelled(o.input + ": interrupted; nothing written");
+    throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
   }
   const TetQualityReport after = analyze_tet_quality(tets);
   const TetVerdict verdict = judge_tets(after, o.thresholds.applied_to({}));

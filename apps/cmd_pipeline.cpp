@@ -13,12 +13,15 @@
 #include "meshprep/pipeline/pipeline_outputs.h"
 #include "meshprep/quality/quality_gate.h"
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace meshprep::cli {
 namespace {
@@ -105,6 +108,13 @@ int exit_code(const PipelineOptions& o, const PipelineResult& result, const Pipe
                    (std::filesystem::path(o.outdir) / "report.html").string() + ")");
 }
 
+// MESHPREP_TEST_WRITE_PAUSE=SECONDS makes the write phase wait that long before each file, so that
+// a test can signal a run while it writes (tests/cli_corpus_test.sh); nothing else reads it.
+void pause_while_writing_for_tests() {
+  if (const char* seconds = std::getenv("MESHPREP_TEST_WRITE_PAUSE"))
+    std::this_thread::sleep_for(std::chrono::duration<double>(std::atof(seconds)));
+}
+
 int run_pipeline_command(const PipelineOptions& o) {
   if (o.config_keys) {
     print_config_keys();
@@ -121,10 +131,11 @@ int run_pipeline_command(const PipelineOptions& o) {
   const std::vector<GateCondition> gate = o.fail_on.empty() ? std::vector<GateCondition>{} : parse_quality_gate(o.fail_on);
   if (!gate.empty()) failed_conditions(gate, pipeline_summary(PipelineResult{}, config));
   if (!std::filesystem::exists(o.input)) throw IoError(o.input + ": cannot read: no such file");
-  for (const char* name : {"surface.ply", "report.html", "report.json", "report.vtu", "pipeline.json"})
-    ensure_not_input((std::filesystem::path(o.outdir) / name).string(), o.input);
-  ensure_not_input(o.json, o.input);
-  prepare_output_dir(o.outdir);  // before the work: an unwritable folder fails at once
+  std::vector<std::string> outputs = {o.json};
+  for (const std::string& name : pipeline_output_names(config, config.tetrahedralize.enabled))
+    outputs.push_back((std::filesystem::path(o.outdir) / name).string());
+  ensure_distinct_files({o.input, o.config}, outputs);
+  check_output_dir(o.outdir);  // before the work: an unusable folder fails at once (made when written)
 
   const ThreadLimit parallelism(o.threads);
   std::ostream& log = o.json == "-" ? std::cerr : std::cout;
@@ -149,7 +160,7 @@ int run_pipeline_command(const PipelineOptions& o) {
   try {
     result = run_pipeline(o.input, config, observer);
   } catch (const Cancelled&) {
-    throw Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : "interrupted") +
+    throw Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : stop_reason()) +
                     "; nothing written");
   }
   arm_timeout(0);  // the outputs are written whole, whatever the clock says
@@ -159,7 +170,15 @@ int run_pipeline_command(const PipelineOptions& o) {
   run["input"] = o.input;
   run["threads"] = parallelism.threads();
   run["versions"] = build_versions();
-  const std::vector<std::string> files = write_pipeline_outputs(result, config, o.outdir, run);
+  std::vector<std::string> files;
+  try {
+    files = write_pipeline_outputs(result, config, o.outdir, run, [] {
+      pause_while_writing_for_tests();
+      return stop_requested();
+    });
+  } catch (const Cancelled&) {
+    throw Cancelled(o.input + ": " + stop_reason() + " while writing " + o.outdir + "; nothing written");
+  }
   const nlohmann::ordered_json summary = pipeline_summary(result, config);
   if (!o.json.empty()) emit_json(summary, o.json);
   if (!o.quiet) {

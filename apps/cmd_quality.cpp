@@ -66,7 +66,7 @@ int run_tet_quality(const QualityOptions& o, const std::vector<GateCondition>& g
     if (!value->empty())
       throw InvalidInput(std::string(option) + " is for surface meshes and " + o.input +
                          " is a tet mesh (its report: the text summary, or --json)");
-  ensure_not_input(o.json, o.input);
+  ensure_distinct_files({o.input}, {o.json});
   TetReadReport read;
   const TetMesh mesh = read_tet_mesh(o.input, &read);
   note_read_changes(read);
@@ -83,10 +83,7 @@ int run_quality(const QualityOptions& o) {
   if (!o.fail_on.empty()) gate = parse_quality_gate(o.fail_on);
   if (is_tet_mesh_path(o.input)) return run_tet_quality(o, gate);
 
-  for (const std::string* out : {&o.json, &o.csv, &o.vtk, &o.html}) {
-    ensure_not_input(*out, o.input);
-    ensure_not_input(*out, o.reference);
-  }
+  ensure_distinct_files({o.input, o.reference}, {o.json, o.csv, o.vtk, o.html});
   ReadReport read;
   const TriangleSoup soup = read_soup(o.input, &read);
   std::unique_ptr<TriangleSoup> reference;

@@ -37,8 +37,7 @@ std::string check_variation_rule(const std::string& text) {
 
 int run_reconstruct(const ReconstructOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_not_input(o.output, o.input);
-  ensure_not_input(o.json, o.input);
+  ensure_distinct_files({o.input}, {o.output, o.json});
   const PointSet input = read_points(o.input);
   ReconstructParams params;
   params.columns = o.resolution[0];

@@ -44,8 +44,7 @@ nlohmann::ordered_json input_facts(const TriangleSoup& soup) {
 
 int run_simplify(const SimplifyOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_not_input(o.output, o.input);
-  ensure_not_input(o.json, o.input);
+  ensure_distinct_files({o.input}, {o.output, o.json});
   if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "simplification");

@@ -35,8 +35,7 @@ struct SmoothOptions {
 
 int run_smooth(SmoothOptions o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_not_input(o.output, o.input);
-  ensure_not_input(o.json, o.input);
+  ensure_distinct_files({o.input}, {o.output, o.json});
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "smoothing");
   o.params.method = kMethods.at(o.method);
@@ -128,7 +127,8 @@ Action add_smooth_command(CLI::App& app) {
               return "expected a number >= 0 or inf, not '" + value + "'";
             }
           },
-          "L|inf"))
+          "L|inf")
+                 .name(kInfinityMeaningful))
       ->capture_default_str();
   cmd->add_option("--relaxation", o->params.relaxation,
                   "rbf: how far each vertex goes towards its 1-ring's centroid before it is put on its local "

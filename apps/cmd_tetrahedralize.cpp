@@ -85,9 +85,8 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
 
 int run_tetrahedralize(const TetOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_not_input(o.output, o.input);
-  ensure_not_input(o.json, o.input);
-  ensure_not_input(o.diagnose, o.input);
+  ensure_distinct_files({o.input}, {o.output, o.json, o.diagnose});
+  check_tet_params(o.params);  // a bound TetGen cannot meet is bad usage, whatever the surface
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
   const TriangleSoup soup = read_soup(o.input);
   nlohmann::ordered_json json;
@@ -103,7 +102,7 @@ int run_tetrahedralize(const TetOptions& o) {
   params.cancelled = stop_requested;
   arm_timeout(o.timeout);
   const auto stopped = [&o] {
-    return Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : "interrupted") +
+    return Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : stop_reason()) +
                      "; nothing written");
   };
   try {

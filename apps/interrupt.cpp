@@ -11,13 +11,15 @@ namespace {
 
 volatile std::sig_atomic_t stop_flag = 0;
 volatile std::sig_atomic_t timeout_flag = 0;
+volatile std::sig_atomic_t stop_signal_number = 0;
 
-void on_interrupt(int) {
-  if (stop_flag) {  // the second Ctrl-C: the user insists
-    std::signal(SIGINT, SIG_DFL);
-    std::raise(SIGINT);
+void on_stop_signal(int signal_number) {
+  if (stop_flag) {  // the second Ctrl-C (or SIGTERM): the sender insists
+    std::signal(signal_number, SIG_DFL);
+    std::raise(signal_number);
     return;
   }
+  stop_signal_number = signal_number;
   stop_flag = 1;
 }
 
@@ -30,9 +32,9 @@ void on_alarm(int) {
 
 void install_interrupt_handlers() {
   struct sigaction action {};
-  action.sa_handler = on_interrupt;
+  action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
   action.sa_handler = on_alarm;
   sigaction(SIGALRM, &action, nullptr);
 }
@@ -43,8 +45,17 @@ bool stop_requested() { return stop_flag != 0; }
 
 bool timed_out() { return timeout_flag != 0; }
 
+int stopped_exit_code() { return 128 + (stop_signal_number != 0 ? stop_signal_number : SIGINT); }
+
+std::string stop_reason() {
+  if (timed_out()) return "timed out";
+  if (stop_signal_number == SIGTERM) return "terminated (SIGTERM)";
+  if (stop_signal_number == SIGHUP) return "hung up (SIGHUP)";
+  return "interrupted";
+}
+
 void throw_if_stop_requested() {
-  if (stop_requested()) throw Cancelled(timed_out() ? "timed out; nothing written" : "interrupted; nothing written");
+  if (stop_requested()) throw Cancelled(stop_reason() + "; nothing written");
 }
 
 std::function<void(double)> stoppable(std::function<void(double)> draw) {

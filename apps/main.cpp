@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   add(cli::add_improve_command);
   add(cli::add_pipeline_command);
   CLI::App* help = app.add_subcommand("help", "Show this help");
+  cli::refuse_non_finite_numbers(app);
 
   try {
     app.parse(argc, argv);
@@ -58,14 +59,17 @@ int main(int argc, char** argv) {
       if (command->parsed()) return action();
     return cli::kBadInput;
   } catch (const Cancelled& e) {
-    // Ctrl-C: 128 + SIGINT, as a shell reports a process it interrupted; a timeout: the work
+    // A signal: 128 + its number, as a shell reports a process it ended; a timeout: the work
     // could not be done in time.
     const bool timeout = cli::timed_out();
     std::cerr << "meshprep: " << (timeout ? "failed: " : "") << e.what() << '\n';
-    return timeout ? cli::kWorkFailed : cli::kInterrupted;
+    return timeout ? cli::kWorkFailed : cli::stopped_exit_code();
   } catch (const InvalidInput& e) {
     std::cerr << "meshprep: error: " << e.what() << '\n';
     return cli::kBadInput;
+  } catch (const WriteError& e) {  // the input was fine; the result cannot be delivered
+    std::cerr << "meshprep: failed: " << e.what() << '\n';
+    return cli::kWorkFailed;
   } catch (const IoError& e) {
     std::cerr << "meshprep: error: " << e.what() << '\n';
     return cli::kBadInput;

@@ -16,7 +16,7 @@ enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2 };
 /// 0), more than `max_arguments` arguments print it to stderr (exit 2). Otherwise runs `body`
 /// (which returns an ExitCode) and turns an exception into one line on stderr and an exit code:
 /// InvalidInput and IoError (bad usage, unreadable input) -> 2, any other meshprep error (a solver
-/// or TetGen failure) -> 1.
+/// or TetGen failure, an output that cannot be written: WriteError) -> 1.
 template <class Body>
 int run_example(int argc, char** argv, const std::string& usage, int max_arguments, Body body) {
   const std::string name = usage.substr(0, usage.find(' '));
@@ -33,6 +33,9 @@ int run_example(int argc, char** argv, const std::string& usage, int max_argumen
   } catch (const InvalidInput& e) {
     std::cerr << name << ": " << e.what() << '\n';
     return kBadInput;
+  } catch (const WriteError& e) {
+    std::cerr << name << ": " << e.what() << '\n';
+    return kWorkFailed;
   } catch (const IoError& e) {
     std::cerr << name << ": " << e.what() << '\n';
     return kBadInput;

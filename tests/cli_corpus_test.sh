@@ -306,5 +306,144 @@ python3 -c "
 import json; j = json.load(open('runs/one_face.off.quality/report.json'))
 assert j['faces'] == 1 and j['border_edges'] == 3 and not j['closed'], j" && ok || bad "the one-face report"
 
+# ---- issue 30: special files, clashing outputs, huge coordinates, NaN options, signals ---------
+sphere=corpus/sphere.off
+# One line "meshprep: error:" or "meshprep: failed:" in err.txt, matching the pattern.
+one_error() { [ "$(grep -cE '^meshprep: (error|failed): ' err.txt)" = 1 ] && grep -qE -- "$2" err.txt && ok || bad "$1: expected one error line matching '$2'"; }
+
+# Outputs that are not regular files are written, never replaced: a FIFO's reader gets the report,
+# a symlink into /dev stays a link (and /dev/null a device), /dev/stdout reaches the pipe. The real
+# /dev/null, /dev/full and /dev/stdout are only reached through links of ours: a meshprep that
+# renames over its target would destroy them.
+mkfifo fifo.json
+timeout 60 cat fifo.json > from_fifo.json &
+reader=$!
+timeout 60 "$bin" quality "$sphere" --json fifo.json > /dev/null 2> err.txt
+expect_exit "--json FIFO" 0 $?
+wait $reader
+[ -p fifo.json ] && python3 -c "import json, sys; assert json.load(open(sys.argv[1]))['faces'] > 0" from_fifo.json && ok ||
+  bad "--json FIFO: the FIFO was replaced or its reader got no report"
+ln -s /dev/null null.json
+"$bin" quality "$sphere" --json null.json > /dev/null 2> err.txt
+expect_exit "--json link to /dev/null" 0 $?
+[ -L null.json ] && [ "$(readlink null.json)" = /dev/null ] && [ -c /dev/null ] && ok ||
+  bad "--json link to /dev/null: the link or the device was replaced"
+# /dev/stdout through a link of ours (it is a link to /proc/self/fd/1 itself): a meshprep that
+# renames over its target replaces our link, not the system's /dev/stdout.
+ln -s /dev/stdout stdout.csv
+"$bin" quality "$sphere" --csv stdout.csv 2> err.txt | head -1 > csv_head.txt
+[ "$(cut -d, -f1-3 csv_head.txt)" = "face,v0,v1" ] && [ -L stdout.csv ] && ok || bad "--csv to /dev/stdout: nothing reached the pipe"
+# A full device is a write failure once the work is done: exit 1, naming the file (through a link,
+# as /dev/null above).
+ln -s /dev/full full.json
+"$bin" quality "$sphere" --json full.json > /dev/null 2> err.txt
+expect_exit "--json link to /dev/full" 1 $?
+one_error "--json link to /dev/full" "full.json: cannot write: No space left on device"
+[ -L full.json ] && [ -c /dev/full ] && ok || bad "the link to /dev/full was replaced"
+
+# Write failures after the work (here: a folder that is a file) exit 1 and name the file.
+echo x > a_file
+"$bin" quality "$sphere" --json a_file/out.json > /dev/null 2> err.txt
+expect_exit "--json under a file" 1 $?
+one_error "--json under a file" "a_file/out.json: cannot write"
+"$bin" simplify "$sphere" -o a_file/out.off --ratio 0.5 --samples 1000 > /dev/null 2> err.txt
+expect_exit "-o under a file" 1 $?
+one_error "-o under a file" "a_file/out.off: cannot write"
+
+# Inputs that are not regular files are refused at once: a FIFO nobody writes to (it would block
+# for ever), a link to /dev/zero (it would be read until memory runs out), as input, reference or
+# configuration.
+mkfifo fifo.off fifo.xyz
+ln -s /dev/zero zero.off
+ln -s /dev/zero zero.json
+for args in "quality fifo.off" "quality zero.off" "quality $sphere --reference zero.off" \
+  "pipeline zero.off -o refused_zero" "pipeline $sphere -o refused_config --config zero.json" \
+  "reconstruct fifo.xyz -o x.off" "improve zero.msh -o x.msh"; do
+  ln -sf /dev/zero zero.msh
+  timeout 20 "$bin" $args > /dev/null 2> err.txt
+  expect_exit "$args" 2 $?
+  one_error "$args" "(fifo|zero)\.(off|xyz|json|msh): not a regular file \((a FIFO|a character device)\)"
+done
+[ ! -e refused_zero ] && [ ! -e refused_config ] && ok || bad "a refused pipeline left a folder"
+
+# Two outputs on one file, however spelled, are refused before any work: exit 2, nothing written.
+mkdir -p sub real && ln -s real linked
+for args in "simplify $sphere -o same.off --ratio 0.5 --json same.off" \
+  "simplify $sphere -o same.off --ratio 0.5 --json sub/../same.off" \
+  "smooth $sphere -o linked/same.off --json real/same.off" \
+  "quality $sphere --json same.json --csv ./same.json" \
+  "tetrahedralize $sphere -o same.node --json same.face" \
+  "pipeline $sphere -o clash --json clash/report.json"; do
+  "$bin" $args > /dev/null 2> err.txt
+  expect_exit "$args" 2 $?
+  one_error "$args" "two outputs would be the same file"
+done
+written=$(ls -d same.* clash 2> /dev/null; ls -A real)
+[ -z "$written" ] && ok || bad "clashing outputs wrote: $written"
+
+# Coordinates whose products overflow (a span of 1e300) are refused on reading, by every command
+# and for tet meshes too: exit 2, naming the file.
+printf 'OFF\n4 4 0\n0 0 0\n1e300 0 0\n0 1e300 0\n0 0 1e300\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > huge.off
+printf '0 0 0\n1e300 0 0\n0 1e300 0\n1e300 1e300 1\n' > huge.xyz
+printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1e300 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 0\nEnd\n' > huge.mesh
+for args in "quality huge.off" "convert huge.off huge.ply" "simplify huge.off -o x.off --ratio 0.5" \
+  "smooth huge.off -o x.off" "enhance huge.off -o x.off" "tetrahedralize huge.off -o x.msh" \
+  "pipeline huge.off -o refused_huge" "reconstruct huge.xyz -o x.off" "pipeline huge.xyz -o refused_huge" \
+  "quality huge.mesh" "improve huge.mesh -o x.mesh" "quality $sphere --reference huge.off"; do
+  timeout 60 "$bin" $args > /dev/null 2> err.txt
+  expect_exit "$args" 2 $?
+  one_error "$args" "huge\.(off|xyz|mesh): the coordinates span 1e\+300 along x, more than 2\.38e\+51"
+done
+[ ! -e refused_huge ] && [ ! -e x.off ] && ok || bad "an input with huge coordinates left outputs"
+
+# Every floating flag of every command refuses nan, inf and -inf (but --smoothing, where inf is
+# the least-squares limit): exit 2 at parsing, nothing written. The flags come from --help, so a
+# new one is covered too.
+"$bin" tetrahedralize "$sphere" -o t.msh > /dev/null 2> err.txt || bad "the sphere's tets for improve"
+declare -A base=([quality]="$sphere" [reconstruct]="corpus/points.xyz -o x.off" [simplify]="$sphere -o x.off"
+  [smooth]="$sphere -o x.off" [enhance]="$sphere -o x.off" [tetrahedralize]="$sphere -o x.msh"
+  [improve]="t.msh -o x.msh" [pipeline]="$sphere -o refused_nan")
+flags=0
+for cmd in "${!base[@]}"; do
+  for flag in $("$bin" $cmd --help | grep -oE -- '--[a-z-]+ FLOAT' | cut -d' ' -f1); do
+    flags=$((flags + 1))
+    for value in nan inf -inf; do
+      [ "$flag $value" = "--smoothing inf" ] && continue
+      "$bin" $cmd ${base[$cmd]} "$flag" "$value" > /dev/null 2> err.txt
+      expect_exit "$cmd $flag $value" 2 $?
+    done
+  done
+done
+[ "$flags" -ge 25 ] && ok || bad "only $flags floating flags found in the commands' --help"
+# Numbers in text options and in the gate; a radius-edge bound TetGen cannot meet (it ran for ever).
+echo '{"tetrahedralize": {"radius_edge": 0.5}}' > radius_half.json
+for args in "enhance $sphere -o x.off --max-deviation nan" "reconstruct corpus/points.xyz -o x.off --variation-threshold nan" \
+  "quality $sphere --fail-on radius_ratio.p95>nan" "pipeline $sphere -o refused_nan --fail-on quality.radius_ratio.p95>nan" \
+  "tetrahedralize $sphere -o x.msh --radius-edge 0.5" "pipeline $sphere -o refused_nan --config radius_half.json" \
+  "smooth $sphere -o x.off --smoothing nan"; do
+  timeout 60 "$bin" $args > /dev/null 2> err.txt
+  expect_exit "$args" 2 $?
+done
+[ ! -e refused_nan ] && [ ! -e x.off ] && [ ! -e x.msh ] && ok || bad "a refused option left outputs"
+
+# SIGTERM and SIGHUP while the pipeline writes: the staging folder is removed, the folder the run
+# made too, exit 128 + the signal. MESHPREP_TEST_WRITE_PAUSE (cmd_pipeline.cpp) holds each file of
+# the write phase for a second, so that the signal lands there.
+for signal in TERM:143 HUP:129; do
+  name=${signal%:*} code=${signal#*:}
+  MESHPREP_TEST_WRITE_PAUSE=1 "$bin" pipeline "$sphere" -o signalled --config quick.json --quiet > /dev/null 2> err.txt &
+  run=$!
+  for _ in $(seq 600); do compgen -G "signalled/.meshprep-staging-*/surface.ply" > /dev/null && break; sleep 0.1; done
+  kill -$name $run
+  wait $run
+  expect_exit "SIG$name while writing" "$code" $?
+  [ ! -e signalled ] && ok || bad "SIG$name while writing left: $(find signalled | head -3)"
+done
+# A staging folder whose run died (SIGKILL: no handler) is removed by the next run into the folder.
+mkdir -p stale/.meshprep-staging-dead01 && echo partial > stale/.meshprep-staging-dead01/surface.ply
+"$bin" pipeline "$sphere" -o stale --config quick.json --quiet > /dev/null 2> err.txt
+expect_exit "pipeline over a stale staging folder" 0 $?
+[ ! -e stale/.meshprep-staging-dead01 ] && [ -s stale/surface.ply ] && ok || bad "the stale staging folder is left"
+
 echo "$runs runs in $((SECONDS - start)) s: $passed checks passed, $failed failed"
 [ "$failed" -eq 0 ]

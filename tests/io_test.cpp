@@ -6,11 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -667,6 +670,94 @@ TEST_F(IoTest, WritingIntoMissingDirectoryNamesThePath) {
   } catch (const IoError& error) {
     EXPECT_NE(std::string(error.what()).find(target + ": cannot write"), std::string::npos) << error.what();
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Special files (issue 30): outputs that are not regular files are written, not replaced; inputs
+// that are not regular files are refused at once.
+
+bool is_fifo(const std::string& p) { return fs::is_fifo(fs::symlink_status(p)); }
+
+TEST_F(IoTest, AFifoAsOutputIsWrittenNotReplaced) {
+  const std::string fifo = path("out.off");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // The reader opens the FIFO as a shell's `cat fifo` would; the write blocks until it does.
+  std::future<std::string> read = std::async(std::launch::async, [&] { return read_text(fifo); });
+  write_soup(tetrahedron(), fifo);
+  const std::string received = read.get();
+  EXPECT_TRUE(is_fifo(fifo)) << "the FIFO was replaced";
+  EXPECT_EQ(received.rfind("OFF", 0), 0u) << received;
+  EXPECT_EQ(directory_entries(), (std::vector<std::string>{"out.off"})) << "a temporary file is left";
+}
+
+TEST_F(IoTest, ASymlinkToADeviceStaysALinkAndTheDeviceStaysADevice) {
+  const std::string link = path("null.json");
+  fs::create_symlink("/dev/null", link);
+  write_file_atomically(link, [](std::ostream& out) { out << "{}\n"; });
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_EQ(directory_entries(), (std::vector<std::string>{"null.json"}));
+}
+
+TEST_F(IoTest, ASymlinkToAFileStaysALinkAndTheFileIsReplaced) {
+  const std::string target = file("real.off", "old");
+  const std::string link = path("link.off");
+  fs::create_symlink("real.off", link);  // relative, as users make them
+  write_soup(tetrahedron(), link);
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read_soup(target).points.size(), 4u);
+  std::vector<std::string> entries = directory_entries();
+  std::sort(entries.begin(), entries.end());
+  EXPECT_EQ(entries, (std::vector<std::string>{"link.off", "real.off"}));
+}
+
+TEST_F(IoTest, AFullDeviceIsAWriteErrorNamingTheFile) {
+  if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  // Through a link: a writer that renames over its target replaces the link, never /dev/full.
+  const std::string full = path("full.json");
+  fs::create_symlink("/dev/full", full);
+  try {
+    write_file_atomically(full, [](std::ostream& out) { out << std::string(1 << 20, 'x'); });
+    FAIL() << "no exception";
+  } catch (const WriteError& e) {
+    EXPECT_NE(std::string(e.what()).find("full.json: cannot write: No space left on device"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(fs::is_symlink(full));
+}
+
+TEST_F(IoTest, InputsThatAreNotRegularFilesAreRefusedAtOnce) {
+  // A FIFO nobody writes to would block the open for ever; a link to /dev/zero would be read until
+  // memory runs out.
+  const std::string fifo = path("points.xyz");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_NE(invalid_input_message([&] { read_points(fifo); }).find("points.xyz: not a regular file (a FIFO)"),
+            std::string::npos);
+  fs::create_symlink("/dev/zero", path("zero.off"));
+  EXPECT_NE(invalid_input_message([&] { read_soup(path("zero.off")); }).find("zero.off: not a regular file (a character device)"),
+            std::string::npos);
+  fs::create_directory(path("folder.stl"));
+  EXPECT_NE(invalid_input_message([&] { read_soup(path("folder.stl")); }).find("folder.stl: not a regular file (a folder)"),
+            std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Coordinates whose products overflow (issue 30): refused on reading, whatever the format.
+
+TEST_F(IoTest, CoordinatesSpanningMoreThanTheStagesCanMultiplyAreRefused) {
+  const std::string off = "OFF\n3 1 0\n-1e300 0 0\n1e300 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string message = invalid_input_message([&] { read_soup(file("huge.off", off)); });
+  EXPECT_NE(message.find("huge.off: the coordinates span 2e+300 along x, more than 2.38e+51"), std::string::npos) << message;
+  // The difference itself overflows: the span is infinite.
+  const std::string overflow = "OFF\n3 1 0\n0 -1.7e308 0\n0 1.7e308 0\n1 0 0\n3 0 1 2\n";
+  EXPECT_NE(invalid_input_message([&] { read_soup(file("overflow.off", overflow)); }).find("span inf along y"),
+            std::string::npos);
+  EXPECT_NE(invalid_input_message([&] { read_points(file("huge.xyz", "0 0 0\n0 0 1e60\n")); }).find("along z"),
+            std::string::npos);
+  // Far from the origin but smaller is fine (the stages move it next to the origin): a span of 1e50,
+  // whose sixth power is still a double.
+  EXPECT_NO_THROW(read_soup(file("far.off", "OFF\n3 1 0\n1e60 0 0\n1.0000000001e60 0 0\n1e60 1e50 0\n3 0 1 2\n")));
+  EXPECT_NO_THROW(read_points(file("large.xyz", "0 0 0\n1e50 0 0\n")));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -122,6 +123,24 @@ TEST(PipelineConfig, ValuesOfTheWrongTypeOrRangeAreRefusedWithTheKey) {
             std::string::npos);
   EXPECT_EQ(error_of(Json::parse(R"({"smooth": 3})")), "c.json: smooth: expected an object of keys, not 3");
   EXPECT_EQ(error_of(Json::parse(R"([1])")), "c.json: a configuration is a JSON object of sections, not [1]");
+}
+
+// The ranges the stage libraries define hold for a configuration file too, naming the file.
+TEST(PipelineConfig, TheLibrariesRangesAreCheckedWithTheFile) {
+  EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"radius_edge": 0.5}})")).rfind(
+                "c.json: tetrahedralize: radius_edge must be 0 (no refinement) or in [1, 100]", 0),
+            0u);
+  // A configuration the command line built (flags bypass apply_config) meets the same checks.
+  PipelineConfig config;
+  config.verdict.min_dihedral_deg = std::nan("");
+  EXPECT_THROW(check_config(config), InvalidInput);
+  config = PipelineConfig();
+  config.tetrahedralize.extrude_base = INFINITY;
+  EXPECT_THROW(check_config(config), InvalidInput);
+  config = PipelineConfig();
+  config.improve.params.time_limit_seconds = INFINITY;
+  EXPECT_THROW(check_config(config), InvalidInput);
+  EXPECT_NO_THROW(check_config(PipelineConfig()));
 }
 
 TEST(PipelineConfig, ARefusedValueIsNotApplied) {

@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -199,7 +203,6 @@ TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
   config.simplify.ratio = 0.5;
   const std::string input = mesh_file(test::icosphere(2), "sphere.off");
   const std::string out = path("out");
-  prepare_output_dir(out);
   const PipelineResult r = run_pipeline(input, config);
   const nlohmann::ordered_json run = {{"input", input}};
   const std::vector<std::string> files = write_pipeline_outputs(r, config, out, run);
@@ -264,7 +267,6 @@ TEST_F(Pipeline, OneSliverIsNotFemReadyAndTheFilesSaySo) {
 
   // The files are written, and every one that judges says "not FEM-ready".
   const std::string out = path("out");
-  prepare_output_dir(out);
   const std::vector<std::string> files = write_pipeline_outputs(r, config, out, {{"input", "sliver.off"}});
   EXPECT_NE(std::find(files.begin(), files.end(), "tets.msh"), files.end());
   EXPECT_TRUE(fs::exists(out + "/tets.msh"));
@@ -291,8 +293,53 @@ TEST_F(Pipeline, OneSliverIsNotFemReadyAndTheFilesSaySo) {
 
 TEST_F(Pipeline, AnOutputFolderThatCannotBeMadeIsAnIoError) {
   std::ofstream(path("file.txt")) << "x";
-  EXPECT_THROW(prepare_output_dir(path("file.txt")), IoError);
-  EXPECT_THROW(prepare_output_dir(path("file.txt") + "/sub"), IoError);
+  EXPECT_THROW(check_output_dir(path("file.txt")), IoError);
+  EXPECT_THROW(check_output_dir(path("file.txt") + "/sub"), IoError);
+  // The check creates nothing: a run refused later leaves no empty folder (issue 30).
+  check_output_dir(path("new/out"));
+  EXPECT_FALSE(fs::exists(path("new")));
+}
+
+// A small run without tets, whose outputs write_pipeline_outputs can write.
+PipelineResult small_result(const std::string& input, PipelineConfig& config) {
+  config.tetrahedralize.enabled = false;
+  return run_pipeline(input, config);
+}
+
+TEST_F(Pipeline, AStopWhileWritingLeavesNothingAndAFolderItMadeIsRemoved) {
+  PipelineConfig config = small_config();
+  const PipelineResult r = small_result(mesh_file(test::icosphere(1), "sphere.off"), config);
+  int asked = 0;
+  // Stops before the third file: two are in the staging folder by then.
+  const auto stop_at_third = [&asked] { return ++asked == 3; };
+  EXPECT_THROW(write_pipeline_outputs(r, config, path("new/out"), {}, stop_at_third), Cancelled);
+  EXPECT_FALSE(fs::exists(path("new"))) << "a folder made for a stopped run is left";
+
+  fs::create_directory(path("kept"));
+  std::ofstream(path("kept/mine.txt")) << "x";
+  asked = 0;
+  EXPECT_THROW(write_pipeline_outputs(r, config, path("kept"), {}, stop_at_third), Cancelled);
+  std::vector<std::string> entries;
+  for (const auto& entry : fs::directory_iterator(path("kept"))) entries.push_back(entry.path().filename().string());
+  EXPECT_EQ(entries, std::vector<std::string>{"mine.txt"}) << "the staging folder is left";
+}
+
+TEST_F(Pipeline, AStagingFolderNobodyHoldsIsRemovedByTheNextRun) {
+  PipelineConfig config = small_config();
+  const PipelineResult r = small_result(mesh_file(test::icosphere(1), "sphere.off"), config);
+  const std::string out = path("out");
+  // What a run killed while writing leaves (SIGKILL: no handler runs).
+  fs::create_directories(out + "/.meshprep-staging-dead01");
+  std::ofstream(out + "/.meshprep-staging-dead01/surface.ply") << "partial";
+  // What a run still writing holds: locked, so kept.
+  fs::create_directories(out + "/.meshprep-staging-live01");
+  const int live = ::open((out + "/.meshprep-staging-live01").c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_EQ(::flock(live, LOCK_EX), 0);
+  write_pipeline_outputs(r, config, out, {});
+  EXPECT_FALSE(fs::exists(out + "/.meshprep-staging-dead01"));
+  EXPECT_TRUE(fs::exists(out + "/.meshprep-staging-live01"));
+  EXPECT_TRUE(fs::exists(out + "/surface.ply"));
+  ::close(live);
 }
 
 TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {

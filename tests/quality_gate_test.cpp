@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 using namespace meshprep;
 
 namespace {
@@ -36,6 +38,9 @@ TEST(QualityGate, NullValuesNeverHold) {
 TEST(QualityGate, BadSpecificationsAreInvalidInput) {
   EXPECT_THROW(parse_quality_gate("radius_ratio.p95"), InvalidInput);
   EXPECT_THROW(parse_quality_gate("radius_ratio.p95>abc"), InvalidInput);
+  // NaN compares false with everything: "p95>nan" would never hold, whatever the mesh (issue 30).
+  for (const char* value : {"nan", "-nan", "inf", "-inf", "infinity"})
+    EXPECT_THROW(parse_quality_gate(std::string("radius_ratio.p95>") + value), InvalidInput) << value;
   EXPECT_THROW(parse_quality_gate(" , "), InvalidInput);
   EXPECT_THROW(failed_conditions(parse_quality_gate("no_such_key>1"), sample_report()), InvalidInput);
   EXPECT_THROW(failed_conditions(parse_quality_gate("closed>1"), sample_report()), InvalidInput);

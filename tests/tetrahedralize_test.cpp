@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 using namespace meshprep;
 
@@ -66,6 +68,29 @@ TEST(Tetrahedralize, SwitchesFollowTheParameters) {
   p.keep_surface = true;
   EXPECT_EQ(tetgen_switches(p, 2.0), "pzQq1.2/15a0.02Y");
   EXPECT_EQ(tetgen_switches(TetParams{}, 1.0), "pzQq1.414");
+}
+
+// Every parameter out of its range is refused before TetGen runs: a NaN bound would drop the
+// switch silently, a radius-edge bound under 1 refines for ever (issue 30).
+TEST(Tetrahedralize, ParametersOutOfRangeAreRefused) {
+  const double nan = std::nan(""), inf = INFINITY;
+  const std::vector<std::pair<double TetParams::*, std::vector<double>>> refused = {
+      {&TetParams::radius_edge, {nan, inf, -1, 0.5, 0.999, 101}},
+      {&TetParams::min_dihedral_deg, {nan, inf, -1, 31}},
+      {&TetParams::max_volume, {nan, inf, -1}},
+      {&TetParams::max_volume_relative, {nan, inf, -0.1, 1.5}}};
+  for (const auto& [field, values] : refused)
+    for (const double value : values) {
+      TetParams p;
+      p.*field = value;
+      EXPECT_THROW(check_tet_params(p), InvalidInput) << value;
+      EXPECT_THROW(tetgen_switches(p, 1.0), InvalidInput) << value;
+    }
+  TetParams unrefined;
+  unrefined.radius_edge = 0;
+  EXPECT_NO_THROW(check_tet_params(unrefined));
+  unrefined.radius_edge = 1;
+  EXPECT_NO_THROW(check_tet_params(unrefined));
 }
 
 TEST(Tetrahedralize, OpenSurfaceGivesNoTetsError) {

@@ -26,6 +26,7 @@ TriangleSoup parse_with(detail::SoupReader reader, const std::string& path, std:
   read.path = path;
   TriangleSoup soup = reader(path, data, read);
   if (soup.triangles.empty()) detail::fail(path, "no faces");
+  detail::check_extent(path, soup.points);
   read.triangles = soup.triangles.size();
   if (report) *report = read;
   return soup;
@@ -47,7 +48,7 @@ TriangleSoup detail::parse_soup(const std::string& path, std::string_view data, 
 
 TriangleSoup read_soup(const std::string& path, ReadReport* report) {
   const detail::SoupReader reader = reader_for(path, extension_of(path));  // an unknown extension before a missing file
-  return parse_with(reader, path, detail::read_file(path), report);
+  return parse_with(reader, path, read_input_file(path), report);
 }
 
 LoadedMesh load_mesh(const std::string& path) {

@@ -37,6 +37,7 @@ PointSet detail::parse_points(const std::string& path, std::string_view data) {
     if (n == 6) set.normals.emplace_back(values[3], values[4], values[5]);
   }
   if (set.points.empty()) fail(path, "no points");
+  check_extent(path, set.points);
   return set;
 }
 
@@ -44,7 +45,7 @@ PointSet read_points(const std::string& path) {
   const std::string extension = extension_of(path);
   if (extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
     detail::fail(path, "a surface mesh (." + extension + "), not a point set (.xyz: x y z per line)");
-  return detail::parse_points(path, detail::read_file(path));
+  return detail::parse_points(path, read_input_file(path));
 }
 
 }  // namespace meshprep

@@ -2,31 +2,29 @@
 
 #include "meshprep/core/errors.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <memory>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace meshprep::detail {
+namespace {
 
-std::string read_file(const std::string& path) {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) throw IoError(path + ": cannot open: " + std::strerror(errno));
-  std::string data;
-  struct stat info {};
-  if (::fstat(::fileno(file.get()), &info) == 0 && info.st_size > 0) {
-    data.reserve(static_cast<std::size_t>(info.st_size));
-  }
-  char chunk[1 << 16];
-  std::size_t got = 0;
-  while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) data.append(chunk, got);
-  if (std::ferror(file.get())) throw IoError(path + ": cannot read: " + std::strerror(errno));
-  return data;
+// The stages multiply up to six lengths: the normal equations of a local least-squares cubic square
+// its cubic terms, TetGen's insphere test multiplies a squared length by a 3 x 3 determinant of
+// lengths, volumes and squared areas are products of three and four. A product of six extents
+// overflows a double beyond the sixth root of its largest value, about 2.4e51, whatever the
+// unit; inputs that span more could hang a stage or make its figures infinite (issue 30, item 4).
+double largest_extent() { return std::cbrt(std::sqrt(std::numeric_limits<double>::max())); }
+
+std::string shown(double value) {
+  std::ostringstream out;
+  out << std::setprecision(3) << value;
+  return out.str();
 }
+
+}  // namespace
 
 void fail(const std::string& path, const std::string& problem) { throw InvalidInput(path + ": " + problem); }
 
@@ -46,6 +44,21 @@ std::string non_finite_text(const Vec3& p) {
     if (std::isinf(p[i])) return p[i] > 0 ? "inf" : "-inf";
   }
   return "finite";
+}
+
+void check_extent(const std::string& path, const std::vector<Vec3>& points) {
+  if (points.empty()) return;
+  Vec3 low = points.front(), high = points.front();
+  for (const Vec3& p : points) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    const double extent = high[axis] - low[axis];  // inf when the difference overflows
+    if (!(extent <= largest_extent()))
+      fail(path, "the coordinates span " + shown(extent) + " along " + "xyz"[axis] + ", more than " +
+                     shown(largest_extent()) + " (where a product of six lengths overflows a double)");
+  }
 }
 
 std::size_t capped_count(std::uint64_t announced, std::size_t bytes, std::size_t min_bytes_each) {

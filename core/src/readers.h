@@ -27,9 +27,6 @@ TriangleSoup parse_soup(const std::string& path, std::string_view data, ReadRepo
 /// read_points on content already in memory, likewise.
 PointSet parse_points(const std::string& path, std::string_view data);
 
-/// The whole content of a file. \throws IoError "<path>: cannot open: <reason>" (or "cannot read").
-std::string read_file(const std::string& path);
-
 /// Throws InvalidInput with the one-line message "<path>: <problem>".
 [[noreturn]] void fail(const std::string& path, const std::string& problem);
 
@@ -44,6 +41,11 @@ bool is_finite(const Vec3& p);
 
 /// The first non-finite coordinate of `p` as text ("nan", "inf" or "-inf").
 std::string non_finite_text(const Vec3& p);
+
+/// Refuses points whose extent along an axis exceeds the largest the stages compute with
+/// (largest_extent, reader_support.cpp), or overflows: InvalidInput "<path>: the coordinates span
+/// <extent> along x, more than ...". Every reader calls this on what it read.
+void check_extent(const std::string& path, const std::vector<Vec3>& points);
 
 /// How many of `announced` items to reserve memory for when each takes at least
 /// `min_bytes_each` of the `bytes` left in the file: a lying header cannot make us allocate more

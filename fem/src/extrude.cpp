@@ -10,6 +10,7 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -74,7 +75,7 @@ TriMesh coarse_base(const TriangleSoup& surface, const std::vector<std::uint32_t
 }  // namespace
 
 SurfacePlc extrude_to_block(const TriangleSoup& surface, double depth) {
-  if (!(depth > 0)) throw InvalidInput("the extrusion depth must be positive");
+  if (!(depth > 0 && std::isfinite(depth))) throw InvalidInput("the extrusion depth must be positive and finite");
   const Topology topo = analyze_topology(surface);
   if (topo.closed) throw InvalidInput("the surface is already closed: there is nothing to extrude");
   if (!topo.oriented)

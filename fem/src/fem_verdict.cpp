@@ -1,9 +1,11 @@
 #include "meshprep/fem/fem_verdict.h"
 
+#include "meshprep/core/errors.h"
 #include "meshprep/quality/json_values.h"
 #include "meshprep/quality/number_format.h"
 
 #include <cmath>
+#include <utility>
 
 namespace meshprep {
 namespace {
@@ -47,7 +49,15 @@ std::vector<ThresholdCheck> TetVerdict::failed() const {
   return list;
 }
 
+void check_thresholds(const TetThresholds& thresholds) {
+  for (const auto& [field, value] : {std::pair<const char*, double>{"min_dihedral_deg", thresholds.min_dihedral_deg},
+                                     std::pair<const char*, double>{"max_dihedral_deg", thresholds.max_dihedral_deg}})
+    if (!(value >= 0 && value <= 180))
+      throw InvalidInput(std::string("verdict: ") + field + " must be in [0, 180], not " + format_number(value, 6));
+}
+
 TetVerdict judge_tets(const TetQualityReport& report, const TetThresholds& thresholds) {
+  check_thresholds(thresholds);
   TetVerdict verdict;
   verdict.checks.push_back(judged(kChecks[0], thresholds.min_dihedral_deg, report.min_dihedral_deg.min));
   verdict.checks.push_back(judged(kChecks[1], thresholds.max_dihedral_deg, report.max_dihedral_deg.max));

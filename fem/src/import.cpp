@@ -5,7 +5,7 @@
 
 #include "importers.h"
 #include "tet_faces.h"
-#include "readers.h"  // core's read_file, fail, is_finite (private to the library, shared by the readers)
+#include "readers.h"  // core's fail, is_finite, check_extent (private to the library, shared by the readers)
 
 #include <algorithm>
 #include <array>
@@ -49,6 +49,7 @@ void check_points(const std::vector<Vec3>& points, const std::string& name) {
   for (std::size_t p = 0; p < points.size(); ++p)
     if (!is_finite(points[p]))
       fail(name, "point " + ordinal(p) + " has a non-finite coordinate (" + non_finite_text(points[p]) + ")");
+  check_extent(name, points);
 }
 
 template <std::size_t N>
@@ -253,7 +254,7 @@ TetMesh read_tet_mesh(const std::string& path, TetReadReport* report) {
     detail::fail(path, (extension.empty() ? std::string("no file extension") : "unknown extension '." + extension + "'") +
                            " for a tetrahedral mesh (reads " + supported + ")");
   }
-  if (format->format) return detail::read_tet_mesh_from_bytes(detail::read_file(path), *format->format, path, report);
+  if (format->format) return detail::read_tet_mesh_from_bytes(read_input_file(path), *format->format, path, report);
 
   // The siblings' extensions in the case of the one given ("A.NODE" -> "A.ELE").
   const bool upper_case = std::isupper(static_cast<unsigned char>(std::filesystem::path(path).extension().string()[1]));
@@ -268,14 +269,14 @@ TetMesh read_tet_mesh(const std::string& path, TetReadReport* report) {
   texts.node_name = sibling(".node");
   texts.ele_name = sibling(".ele");
   texts.face_name = sibling(".face");
-  const std::string node = detail::read_file(texts.node_name);
-  const std::string ele = detail::read_file(texts.ele_name);
+  const std::string node = read_input_file(texts.node_name);
+  const std::string ele = read_input_file(texts.ele_name);
   std::string face;
   texts.node = node;
   texts.ele = ele;
   std::error_code ec;
   if (std::filesystem::exists(texts.face_name, ec)) {
-    face = detail::read_file(texts.face_name);
+    face = read_input_file(texts.face_name);
     texts.face = face;
   }
   return detail::read_tet_mesh_from_texts(texts, report);

@@ -176,7 +176,25 @@ std::string run_tetgen(const SurfacePlc& plc, const std::string& switches) {
 
 }  // namespace
 
+void check_tet_params(const TetParams& params) {
+  const auto refuse = [](const char* field, const char* range, double value) {
+    std::ostringstream message;
+    message << "tetrahedralize: " << field << " must be " << range << ", not " << value;
+    throw InvalidInput(message.str());
+  };
+  const double q = params.radius_edge;
+  if (!(q == 0 || (q >= 1 && q <= 100)))
+    refuse("radius_edge", "0 (no refinement) or in [1, 100] (TetGen's refinement need not end below 1)", q);
+  if (!(params.min_dihedral_deg >= 0 && params.min_dihedral_deg <= 30))
+    refuse("min_dihedral_deg", "in [0, 30]", params.min_dihedral_deg);
+  if (!(params.max_volume >= 0 && std::isfinite(params.max_volume)))
+    refuse("max_volume", "finite and >= 0", params.max_volume);
+  if (!(params.max_volume_relative >= 0 && params.max_volume_relative <= 1))
+    refuse("max_volume_relative", "in [0, 1]", params.max_volume_relative);
+}
+
 std::string tetgen_switches(const TetParams& params, double enclosed_volume) {
+  check_tet_params(params);
   std::ostringstream sw;
   sw.precision(8);
   sw << "pzQ";  // PLC input, zero-based numbering, quiet

@@ -409,6 +409,7 @@ class Run {
 }  // namespace
 
 PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer) {
+  check_config(config);  // before any work, whoever built the configuration
   return Run(input, config, observer).run();
 }
 

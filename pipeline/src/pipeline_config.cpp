@@ -3,10 +3,10 @@
 #include "config_text.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
 #include "meshprep/preprocess/variation_rule.h"
 
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <sstream>
 #include <utility>
@@ -360,6 +360,23 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
       }
     }
   }
+  try {
+    check_config(config);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(origin + ": " + e.what());
+  }
+}
+
+void check_config(const PipelineConfig& config) {
+  check_tet_params(config.tetrahedralize.params);
+  check_improve_params(config.improve.params);
+  check_thresholds(config.verdict);
+  const PipelineConfig::Tetrahedralize& t = config.tetrahedralize;
+  if (!(t.extrude_base >= 0 && std::isfinite(t.extrude_base)))
+    throw InvalidInput("tetrahedralize: extrude_base must be finite and >= 0, not " + std::to_string(t.extrude_base));
+  if (!(t.extrude_base_relative > 0 && std::isfinite(t.extrude_base_relative)))
+    throw InvalidInput("tetrahedralize: extrude_base_relative must be finite and > 0, not " +
+                       std::to_string(t.extrude_base_relative));
 }
 
 void detail::apply_config_text(std::string_view text, const std::string& origin, PipelineConfig& config) {
@@ -377,11 +394,7 @@ void detail::apply_config_text(std::string_view text, const std::string& origin,
 }
 
 void read_config_file(const std::string& path, PipelineConfig& config) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open the configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  detail::apply_config_text(text.str(), path, config);
+  detail::apply_config_text(read_input_file(path), path, config);
 }
 
 OrderedJson to_json(const PipelineConfig& config) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 namespace meshprep {
@@ -33,6 +34,9 @@ GateCondition parse_condition(const std::string& raw) {
       const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), number);
       if (value.empty() || ec != std::errc() || end != value.data() + value.size())
         throw InvalidInput("quality gate: condition '" + c.text + "': value '" + value + "' is not a number or true/false");
+      // NaN compares false with everything and infinities bound nothing: such a gate would never act.
+      if (!std::isfinite(number))
+        throw InvalidInput("quality gate: condition '" + c.text + "': value '" + value + "' is not a finite number");
       c.value = number;
     }
     if (c.key.empty()) throw InvalidInput("quality gate: condition '" + c.text + "' has no key");

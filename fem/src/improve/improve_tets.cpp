@@ -57,14 +57,6 @@ constexpr std::size_t kTriesPerBadTet = 20;
 constexpr std::size_t kPollEvery = 256;
 constexpr std::size_t kListedLimitingEdges = 100;
 
-void check_params(const ImproveParams& p) {
-  if (!(p.goal_min_dihedral_deg > 0 && p.goal_min_dihedral_deg < 60))
-    throw InvalidInput("improve: goal_min_dihedral_deg must be in (0, 60), got " + std::to_string(p.goal_min_dihedral_deg));
-  if (!(p.goal_max_dihedral_deg > 60 && p.goal_max_dihedral_deg < 180))
-    throw InvalidInput("improve: goal_max_dihedral_deg must be in (60, 180), got " + std::to_string(p.goal_max_dihedral_deg));
-  if (p.max_passes < 1) throw InvalidInput("improve: max_passes must be at least 1");
-  if (!(p.time_limit_seconds >= 0)) throw InvalidInput("improve: time_limit_seconds must be >= 0");
-}
 
 struct DihedralRange {
   double min = 180, max = 0;
@@ -366,8 +358,18 @@ class Schedule {
 
 }  // namespace
 
+void check_improve_params(const ImproveParams& p) {
+  if (!(p.goal_min_dihedral_deg > 0 && p.goal_min_dihedral_deg < 60))
+    throw InvalidInput("improve: goal_min_dihedral_deg must be in (0, 60), got " + std::to_string(p.goal_min_dihedral_deg));
+  if (!(p.goal_max_dihedral_deg > 60 && p.goal_max_dihedral_deg < 180))
+    throw InvalidInput("improve: goal_max_dihedral_deg must be in (60, 180), got " + std::to_string(p.goal_max_dihedral_deg));
+  if (p.max_passes < 1) throw InvalidInput("improve: max_passes must be at least 1");
+  if (!(p.time_limit_seconds >= 0 && std::isfinite(p.time_limit_seconds)))
+    throw InvalidInput("improve: time_limit_seconds must be finite and >= 0");
+}
+
 ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
-  check_params(params);
+  check_improve_params(params);
   const Clock::time_point start = Clock::now();
   ImproveResult result;
   analyze_tet_quality(mesh);  // checks indices and the region count (throws InvalidInput)

@@ -1,7 +1,7 @@
 #pragma once
 /// \file errors.h
 /// The exception family thrown by every meshprep library. The library never prints and never
-/// exits; the CLI maps these to exit codes (InvalidInput/IoError -> 2, the others -> 1).
+/// exits; the CLI maps these to exit codes (InvalidInput/IoError -> 2, WriteError and the others -> 1).
 
 #include <stdexcept>
 #include <string>
@@ -21,10 +21,17 @@ class InvalidInput : public Error {
   using Error::Error;
 };
 
-/// A file could not be opened, read or written (missing, permission, disk full).
+/// A file could not be opened or read (missing, permission), or written (then a WriteError).
 class IoError : public Error {
  public:
   using Error::Error;
+};
+
+/// An output could not be written (disk full, permission, a folder missing): the input was fine and
+/// the work may be done, but it cannot be delivered. Messages name the file.
+class WriteError : public IoError {
+ public:
+  using IoError::IoError;
 };
 
 /// An algorithm could not do its work on valid input (e.g. a solver failed to converge).

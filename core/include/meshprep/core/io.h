@@ -94,6 +94,14 @@ struct PointSet {
 /// mix of 3- and 6-column lines, or no points; IoError if unreadable.
 PointSet read_points(const std::string& path);
 
+/// The whole content of the input file `path` (symlinks followed). Only a regular file is read: a
+/// device, a FIFO, a socket or a folder is refused at once, since it may never end (/dev/zero) or
+/// never start (a FIFO nobody writes to). Every reader and the pipeline's configuration read
+/// through this.
+/// \throws InvalidInput "<path>: not a regular file (a FIFO): ..."; IoError "<path>: cannot open:
+/// <reason>" (or "cannot read").
+std::string read_input_file(const std::string& path);
+
 /// Lower-case extension without the dot ("off" for "a/B.OFF"); empty if none.
 std::string extension_of(const std::string& path);
 

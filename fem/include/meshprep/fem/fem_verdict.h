@@ -45,7 +45,11 @@ struct TetVerdict {
   std::vector<ThresholdCheck> failed() const;  ///< the checks that do not hold, in order
 };
 
-/// Judge `report` against `thresholds`: the smallest dihedral angle must be >= min_dihedral_deg,
+/// \throws InvalidInput "verdict: <field> must be in [0, 180], not <value>" for an angle outside
+/// [0, 180] or NaN (a NaN threshold would fail every mesh, or with >= pass none).
+void check_thresholds(const TetThresholds& thresholds);
+
+/// Judge `report` against `thresholds` (checked: check_thresholds): the smallest dihedral angle must be >= min_dihedral_deg,
 /// the largest <= max_dihedral_deg, the inverted tets <= max_inverted_tets. An empty mesh fails
 /// the angle checks (there is nothing to solve on).
 TetVerdict judge_tets(const TetQualityReport& report, const TetThresholds& thresholds = {});

@@ -84,6 +84,10 @@ struct ImproveResult {
   double surface_bound_deg = 0;
 };
 
+/// \throws InvalidInput "improve: <field> must be ..." if a goal is outside its range (NaN never is
+/// inside), max_passes is 0 or the time limit is negative or not finite.
+void check_improve_params(const ImproveParams& params);
+
 /// Improves `mesh` in place (its points keep their indices; new points are appended; tets are
 /// renumbered). \pre every tet positively oriented (TetGen's and the readers' are).
 /// \throws InvalidInput for a malformed mesh (indices, region count, a face shared by three tets,

@@ -15,10 +15,10 @@
 namespace meshprep {
 
 struct TetParams {
-  double radius_edge = 1.414;  ///< TetGen -q bound on circumradius / shortest edge (>= 1; 0 = no refinement)
-  double min_dihedral_deg = 0;  ///< TetGen -q/DEG target for the smallest dihedral angle (0 = TetGen's default)
-  double max_volume = 0;        ///< TetGen -a: largest tet volume, absolute (0 = no bound)
-  double max_volume_relative = 0;  ///< same, as a fraction of the enclosed volume (0 = no bound)
+  double radius_edge = 1.414;  ///< TetGen -q bound on circumradius / shortest edge (in [1, 100]; 0 = no refinement)
+  double min_dihedral_deg = 0;  ///< TetGen -q/DEG target for the smallest dihedral angle, in [0, 30] (0 = TetGen's default)
+  double max_volume = 0;        ///< TetGen -a: largest tet volume, absolute, finite (0 = no bound)
+  double max_volume_relative = 0;  ///< same, as a fraction of the enclosed volume, in [0, 1] (0 = no bound)
   bool keep_surface = false;    ///< TetGen -Y: the boundary keeps exactly the input triangles
   /// Asked every 50 ms while TetGen runs; true stops it (tetrahedralize_plc throws Cancelled).
   std::function<bool()> cancelled;
@@ -42,11 +42,18 @@ class TetgenError : public Error {
   int code_;
 };
 
+/// Checks every field of `params` against its range above; NaN and infinities are never in range.
+/// A radius-edge bound under 1 is refused: TetGen's refinement need not end below it (0.5 ran for
+/// ever, issue 30). \throws InvalidInput "tetrahedralize: <field> must be ..., not <value>".
+void check_tet_params(const TetParams& params);
+
 /// Tetrahedralise a PLC (no readiness check: the caller vouches for it).
-/// \throws TetgenError; Cancelled when params.cancelled said so.
+/// \throws TetgenError; InvalidInput for params out of range (check_tet_params); Cancelled when
+/// params.cancelled said so.
 TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params);
 
 /// The TetGen switches for `params` ("pzQ" + q, a, Y), given the enclosed volume.
+/// \throws InvalidInput for params out of range (check_tet_params).
 std::string tetgen_switches(const TetParams& params, double enclosed_volume);
 
 /// The PLC of a closed triangle surface, every facet tagged `tag`. Points no face uses are left

@@ -123,6 +123,14 @@ struct ConfigKeyDoc {
 ///         (with the valid ones), a value of the wrong type or out of range.
 void apply_config(const nlohmann::json& json, const std::string& origin, PipelineConfig& config);
 
+/// Checks, before any work, the settings whose ranges the stage libraries define: TetGen's
+/// (check_tet_params: a radius-edge bound under 1 never ends), the improvement's
+/// (check_improve_params), the verdict's (check_thresholds), and the extrusion depths (positive,
+/// finite). apply_config and run_pipeline call it, so a configuration file and the command line's
+/// flags meet the same checks. The preprocessing stages check theirs when they start.
+/// \throws InvalidInput "<section>: <key> must be ..., not <value>".
+void check_config(const PipelineConfig& config);
+
 /// Read a configuration file onto `config`. \throws IoError if unreadable; InvalidInput as above
 /// and for malformed JSON (with the line and column).
 void read_config_file(const std::string& path, PipelineConfig& config);

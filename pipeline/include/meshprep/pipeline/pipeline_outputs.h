@@ -16,14 +16,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace meshprep {
 
-/// Creates `outdir` (and its parents) if needed and checks that files can be created in it.
+/// Checks, before the work and creating nothing, that `outdir` is a folder meshprep may write into
+/// or can be created as one (its nearest existing ancestor is a writable folder): a run that fails
+/// or is refused leaves no empty folder behind. write_pipeline_outputs creates it.
 /// \throws IoError naming the folder and the reason.
-void prepare_output_dir(const std::string& outdir);
+void check_output_dir(const std::string& outdir);
+
+/// The names of the files a run writes into its folder: surface.ply, tets.<format> (TetGen's
+/// format: three files) when `with_tets`, report.html, report.json, report.vtu, pipeline.json.
+std::vector<std::string> pipeline_output_names(const PipelineConfig& config, bool with_tets);
 
 /// The versions of meshprep and of the libraries it was built with.
 nlohmann::ordered_json build_versions();
@@ -36,14 +43,21 @@ nlohmann::ordered_json pipeline_summary(const PipelineResult& result, const Pipe
 /// The content of pipeline.json: {"run": `run`, then every configuration section}.
 nlohmann::ordered_json pipeline_record(const PipelineConfig& config, const nlohmann::ordered_json& run);
 
-/// Writes the files above into `outdir` (prepared) and returns their names. All are written into
-/// a staging folder inside `outdir` first and then renamed into place, so that each file is
-/// either the previous run's or this run's, never half-written, and a failure leaves the folder
-/// as it was. A tet mesh of another format (or any, when this run made none) left by an earlier
-/// run is removed, so the folder always holds one run's files.
-/// \throws IoError if a file cannot be written.
+/// Writes the files above into `outdir` (created if needed, with its parents) and returns their
+/// names. All are written into a staging folder `.meshprep-staging-XXXXXX` inside `outdir` first and
+/// then renamed into place, so that each file is either the previous run's or this run's, never
+/// half-written, and a failure leaves the folder as it was (a folder this call created is removed
+/// again). A tet mesh of another format (or any, when this run made none) left by an earlier run is
+/// removed, so the folder always holds one run's files.
+///
+/// The staging folder is locked (flock) while the run writes. One that nobody holds locked was left
+/// by a run that died while writing (SIGKILL, a power cut): it is removed before this run writes.
+/// `cancelled`, if given, is asked before each file; when it says yes, the staging folder is
+/// removed and Cancelled thrown (once the renames have begun, they are finished).
+/// \throws WriteError if a file or the folder cannot be written; Cancelled.
 std::vector<std::string> write_pipeline_outputs(const PipelineResult& result, const PipelineConfig& config,
-                                                const std::string& outdir, const nlohmann::ordered_json& run);
+                                                const std::string& outdir, const nlohmann::ordered_json& run,
+                                                const std::function<bool()>& cancelled = {});
 
 /// The pipeline's HTML report (report.html) as a string.
 std::string pipeline_report_html(const PipelineResult& result, const PipelineConfig& config);

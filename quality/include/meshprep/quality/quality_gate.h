@@ -3,7 +3,7 @@
 /// A quality gate for scripts and CI: conditions on the report's JSON that must NOT hold.
 /// Syntax: comma-separated `KEY OP VALUE`, KEY a dotted path into the JSON report
 /// (`radius_ratio.p95`, `reference.hausdorff_relative`, `closed`), OP one of > >= < <= = !=,
-/// VALUE a number or true/false. Example: "radius_ratio.p95>3,faces_min_angle_below_20>0.05,closed=false".
+/// VALUE a finite number or true/false. Example: "radius_ratio.p95>3,faces_min_angle_below_20>0.05,closed=false".
 
 #include <nlohmann/json.hpp>
 
