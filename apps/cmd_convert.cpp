@@ -43,7 +43,7 @@ void write_naming_both(const ConvertOptions& o, Write write) {
 }
 
 int convert_tet_mesh(const ConvertOptions& o) {
-  ensure_distinct_files({o.input}, {o.output});
+  ensure_distinct_files({o.input}, {o.output, o.json});
   TetReadReport read;
   const TetMesh mesh = read_tet_mesh(o.input, &read);
   note_read_changes(read);
@@ -59,7 +59,7 @@ int convert_tet_mesh(const ConvertOptions& o) {
 }
 
 int convert_surface(const ConvertOptions& o) {
-  ensure_distinct_files({o.input}, {o.output});
+  ensure_distinct_files({o.input}, {o.output, o.json});
   ReadReport read;
   const TriangleSoup soup = read_soup(o.input, &read);
   WriteOptions options;
@@ -90,7 +90,6 @@ Action add_convert_command(CLI::App& app) {
   cmd->add_option("--json", o->json, "Write what was converted (counts) as JSON (- for standard output)");
   return [o] {
     if (o->output.empty()) throw InvalidInput("convert: give the output file with -o OUT");
-    ensure_not_input(o->json, o->input);
     return is_tet_mesh_path(o->input) ? convert_tet_mesh(*o) : convert_surface(*o);
   };
 }
