@@ -164,6 +164,16 @@ TEST(PartitionOfUnity, RefusesBadInput) {
   EXPECT_THROW(PartitionOfUnity(sample(100, [](double, double) { return 0.0; }), bad), InvalidInput);
 }
 
+TEST(Reconstruct, NanSpacingOrGapIsRefused) {
+  const std::vector<Vec3> points = sample(100, [](double, double) { return 0.0; });
+  ReconstructParams params;
+  params.max_gap = std::nan("");
+  EXPECT_THROW(reconstruct_surface(points, params), InvalidInput);
+  params = ReconstructParams();
+  params.spacing = std::nan("");
+  EXPECT_THROW(reconstruct_surface(points, params), InvalidInput);
+}
+
 TEST(PartitionOfUnity, RefusesPointsAlongACurveAndAcceptsANarrowStrip) {
   // 1,000 points on a line with 1e-9 noise across it (issue 30: a grid of 178 k needles), and the
   // same on a tilted line; then a strip three samples wide, which is a surface.

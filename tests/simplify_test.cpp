@@ -332,6 +332,18 @@ TEST(Simplify, ATerrainStaysAHeightField) {
   }
 }
 
+TEST(Simplify, NanParametersAreRefused) {
+  TriMesh mesh = mesh_from_soup(test::grid(4));
+  SimplifyParams p;
+  p.min_angle_deg = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(simplify(mesh, p), InvalidInput);
+  p = SimplifyParams();
+  p.max_error = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(simplify(mesh, p), InvalidInput);
+  p.max_error = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(simplify(mesh, p), InvalidInput);
+}
+
 TEST(Simplify, BadParameters) {
   TriMesh mesh = mesh_from_soup(test::cube());
   SimplifyParams p;

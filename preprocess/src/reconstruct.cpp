@@ -185,6 +185,8 @@ void adapt_to_features(const PartitionOfUnity& pu, const ReconstructParams& para
 }  // namespace
 
 ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const ReconstructParams& params) {
+  if (!(params.spacing >= 0 && std::isfinite(params.spacing)) || !(params.max_gap >= 0 && std::isfinite(params.max_gap)))
+    throw InvalidInput("the grid spacing and the largest gap must be finite numbers >= 0 (0: automatic)");
   const PartitionOfUnity pu(points, params.fit);
   ReconstructResult result;
   result.patches = pu.patches();

@@ -261,9 +261,11 @@ SimplifyResult simplify_and_enhance(TriMesh& mesh, const SimplifyParams& params)
 
 SimplifyResult simplify(TriMesh& mesh, const SimplifyParams& params) {
   if (mesh.n_faces() == 0) throw InvalidInput("the mesh has no faces to simplify");
-  if (params.min_angle_deg < 0 || params.min_angle_deg >= 60)
+  // Written so that NaN fails them (a NaN angle bound would switch the guard off silently).
+  if (!(params.min_angle_deg >= 0 && params.min_angle_deg < 60))
     throw InvalidInput("the minimum angle must be in [0, 60) degrees");
-  if (params.max_error < 0) throw InvalidInput("the maximum error must not be negative");
+  if (!(params.max_error >= 0 && std::isfinite(params.max_error)))
+    throw InvalidInput("the maximum error must be a finite number >= 0");
   const ShiftedToOrigin near_origin(mesh);  // quadrics square the coordinates
   SimplifyResult result =
       params.enhance && params.cost != CollapseCost::Quadric ? simplify_and_enhance(mesh, params) : reduce(mesh, params);
