@@ -174,6 +174,23 @@ TEST(Reconstruct, NanSpacingOrGapIsRefused) {
   EXPECT_THROW(reconstruct_surface(points, params), InvalidInput);
 }
 
+TEST(PartitionOfUnity, ADegenerateLocalFitIsNamedByItsPlace) {
+  // Two parallel lines of samples a unit apart: the set spans an area, but every cell's nearest
+  // samples lie on one line, where no height map is determined. The message gives the place, not
+  // the spline class's name.
+  std::vector<Vec3> lines;
+  for (int i = 0; i < 500; ++i)
+    for (const double y : {0.0, 1.0}) lines.emplace_back(i / 499.0, y, 0.0);
+  try {
+    const PartitionOfUnity pu(lines);
+    ADD_FAILURE() << "two lines of samples accepted";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("the local surface of the ", 0), 0u) << message;
+    EXPECT_NE(message.find(" points around ("), std::string::npos) << message;
+  }
+}
+
 TEST(PartitionOfUnity, RefusesPointsAlongACurveAndAcceptsANarrowStrip) {
   // 1,000 points on a line with 1e-9 noise across it (issue 30: a grid of 178 k needles), and the
   // same on a tilted line; then a strip three samples wide, which is a surface.

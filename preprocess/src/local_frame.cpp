@@ -12,7 +12,7 @@ double LocalFrame::surface_variation() const {
 }
 
 LocalFrame pca_frame(const std::vector<Vec3>& points) {
-  if (points.empty()) throw InvalidInput("pca_frame: no points");
+  if (points.empty()) throw InvalidInput("no points to fit a plane to");
   LocalFrame frame;
   for (const Vec3& p : points) frame.origin += p;
   frame.origin /= static_cast<double>(points.size());

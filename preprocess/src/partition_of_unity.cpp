@@ -187,7 +187,21 @@ PartitionOfUnity::PartitionOfUnity(const std::vector<Vec3>& points, const Partit
       values[static_cast<Eigen::Index>(sites.size())] = heights[s];
       sites.push_back(samples.points[s]);
     }
-    fits[c].emplace(sites, values, params.polynomial);
+    // The spline's own message names the class (DuchonSpline: ...); the user needs the place.
+    const auto at_the_place = [&](const Error& e) {
+      const Vec3 centre = frame_.to_world(Vec3(centres_[c].x(), centres_[c].y(), 0));
+      std::ostringstream message;
+      message << "the local surface of the " << sites.size() << " points around (" << centre.x() << ", " << centre.y()
+              << ", " << centre.z() << ") cannot be fitted: their layout is degenerate (" << e.what() << ")";
+      return message.str();
+    };
+    try {
+      fits[c].emplace(sites, values, params.polynomial);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(at_the_place(e));
+    } catch (const SolverError& e) {
+      throw SolverError(at_the_place(e));
+    }
   });
   fits_.reserve(cells.size());
   for (std::optional<DuchonSpline>& fit : fits) fits_.push_back(std::move(*fit));
