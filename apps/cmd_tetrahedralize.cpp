@@ -10,8 +10,8 @@
 
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
-#include "meshprep/fem/extrude.h"
 #include "meshprep/fem/fem_check.h"
+#include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/solver_targets.h"
 #include "meshprep/fem/tet_quality.h"
@@ -24,6 +24,8 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace meshprep::cli {
 namespace {
@@ -44,18 +46,17 @@ void progress(const std::string& line) {
 }
 
 
-// The surface as a PLC: either closed and FEM-ready (checked), or an open height field extruded.
+// The surface as a PLC (prepare_plc.h): an open height field extruded when asked, else checked.
 SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohmann::ordered_json& json) {
+  std::optional<double> depth;
   if (o.extrude_depth > 0 || o.extrude_relative > 0) {
-    const double depth = o.extrude_depth > 0 ? o.extrude_depth : o.extrude_relative * bbox_diagonal(soup);
-    json["extrude_base_depth"] = depth;
-    try {
-      return extrude_to_block(soup, depth);
-    } catch (const InvalidInput& e) {
-      throw WorkFailed(o.input + ": cannot extrude: " + e.what());
-    }
+    depth = o.extrude_depth > 0 ? o.extrude_depth : o.extrude_relative * bbox_diagonal(soup);
+    json["extrude_base_depth"] = *depth;
   }
-  const Readiness readiness = check_fem_readiness(soup);
+  PreparedPlc prepared = prepare_plc(soup, depth);
+  if (depth && !prepared.plc) throw WorkFailed(o.input + ": cannot extrude: " + prepared.extrusion_problem);
+  if (depth) return std::move(*prepared.plc);
+  const Readiness& readiness = *prepared.readiness;
   json["readiness"] = to_json(readiness);
   if (!readiness.ready()) {
     if (!o.diagnose.empty()) write_soup(diagnosis_mesh(soup, readiness), o.diagnose);
@@ -75,12 +76,8 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
   if (readiness.isolated_vertices > 0)
     std::cerr << "meshprep: note: " << o.input << ": " << readiness.isolated_vertices
               << " isolated vertices (no face uses them) are left out of the tets\n";
-  TriangleSoup oriented = soup;
-  if (readiness.inward_oriented) {  // TetGen does not mind, but our boundary tags' normals do
-    for (Triangle& t : oriented.triangles) std::swap(t[1], t[2]);
-    json["flipped_inward_orientation"] = true;
-  }
-  return plc_from_surface(oriented, 1);
+  if (prepared.flipped_inward) json["flipped_inward_orientation"] = true;
+  return std::move(*prepared.plc);
 }
 
 int run_tetrahedralize(const TetOptions& o) {

@@ -4,6 +4,7 @@
 #include "meshprep/core/io.h"
 #include "meshprep/fem/extrude.h"
 #include "meshprep/fem/improve_tets.h"
+#include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/enhance.h"
 #include "meshprep/preprocess/reconstruct.h"
@@ -297,29 +298,23 @@ class Run {
     finish(std::move(record));
   }
 
-  // The final surface as TetGen's input: checked when closed, extruded into a block when open.
-  std::optional<SurfacePlc> prepare_plc(StageRecord& record) {
-    const TriangleSoup& surface = result_.surface;
-    if (result_.final_quality.closed) {
-      result_.readiness = check_fem_readiness(surface);
+  // The final surface as TetGen's input (prepare_plc.h): checked when closed, extruded into a block
+  // when open.
+  std::optional<SurfacePlc> prepare_tet_input(StageRecord& record) {
+    std::optional<double> depth;
+    if (!result_.final_quality.closed) {
+      const PipelineConfig::Tetrahedralize& c = config_.tetrahedralize;
+      depth = c.extrude_base > 0 ? c.extrude_base : c.extrude_base_relative * result_.final_quality.bbox_diagonal;
+      record.details["extrude_base_depth"] = *depth;
+    }
+    PreparedPlc prepared = prepare_plc(result_.surface, depth);
+    result_.readiness = prepared.readiness;
+    if (result_.readiness)
       for (const ReadinessProblem& p : result_.readiness->problems) result_.fem.problems.push_back(p.what + "; " + p.hint);
-      if (!result_.readiness->ready()) return std::nullopt;
-      TriangleSoup oriented = surface;
-      if (result_.readiness->inward_oriented)  // TetGen does not mind, the boundary tags' normals do
-        for (Triangle& t : oriented.triangles) std::swap(t[1], t[2]);
-      return plc_from_surface(oriented, 1);
-    }
-    const PipelineConfig::Tetrahedralize& c = config_.tetrahedralize;
-    const double depth = c.extrude_base > 0 ? c.extrude_base : c.extrude_base_relative * result_.final_quality.bbox_diagonal;
-    record.details["extrude_base_depth"] = depth;
-    try {
-      SurfacePlc block = extrude_to_block(surface, depth);
-      result_.extrusion_depth = depth;
-      return block;
-    } catch (const InvalidInput& e) {
-      result_.fem.problems.push_back(std::string("the open surface cannot be closed into a block: ") + e.what());
-      return std::nullopt;
-    }
+    if (!prepared.extrusion_problem.empty())
+      result_.fem.problems.push_back("the open surface cannot be closed into a block: " + prepared.extrusion_problem);
+    if (depth && prepared.plc) result_.extrusion_depth = depth;
+    return std::move(prepared.plc);
   }
 
   void tetrahedralize_stage() {
@@ -329,7 +324,7 @@ class Run {
     fill_shape(record, result_.final_quality);
     const Clock::time_point start = Clock::now();
     TetParams params = config_.tetrahedralize.params;
-    if (std::optional<SurfacePlc> plc = prepare_plc(record)) {
+    if (std::optional<SurfacePlc> plc = prepare_tet_input(record)) {
       params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
       params.cancelled = observer_.cancelled;
       try {
