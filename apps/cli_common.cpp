@@ -3,7 +3,7 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/solver_targets.h"
-#include "meshprep/quality/number_format.h"
+#include "meshprep/report/number_format.h"
 
 #include <algorithm>
 #include <cmath>

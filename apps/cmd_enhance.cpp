@@ -9,7 +9,7 @@
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/enhance.h"
 #include "meshprep/quality/report.h"
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include <iostream>
 #include <memory>

@@ -10,7 +10,7 @@
 #include "meshprep/fem/import.h"
 #include "meshprep/quality/quality_gate.h"
 #include "meshprep/quality/report.h"
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include <iostream>
 #include <memory>

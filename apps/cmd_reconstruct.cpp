@@ -10,7 +10,7 @@
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/reconstruct.h"
 #include "meshprep/preprocess/variation_rule.h"
-#include "meshprep/quality/json_values.h"
+#include "meshprep/report/json_values.h"
 
 #include <chrono>
 #include <iostream>

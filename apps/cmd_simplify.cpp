@@ -9,9 +9,9 @@
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/simplify.h"
 #include "meshprep/quality/report.h"
-#include "meshprep/quality/report_writers.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/topology.h"
+#include "meshprep/report/report_writers.h"
 
 #include <iostream>
 #include <map>

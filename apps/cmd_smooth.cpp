@@ -9,11 +9,11 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/smooth.h"
-#include "meshprep/quality/json_values.h"
 #include "meshprep/quality/report.h"
-#include "meshprep/quality/report_writers.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"
+#include "meshprep/report/json_values.h"
+#include "meshprep/report/report_writers.h"
 
 #include <cmath>
 #include <iostream>

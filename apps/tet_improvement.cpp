@@ -2,7 +2,7 @@
 
 #include "interrupt.h"
 
-#include "meshprep/quality/number_format.h"
+#include "meshprep/report/number_format.h"
 
 #include <unistd.h>
 

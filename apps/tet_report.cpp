@@ -3,8 +3,8 @@
 
 #include "meshprep/fem/tet_boundary.h"
 #include "meshprep/fem/tet_quality.h"
-#include "meshprep/quality/number_format.h"
 #include "meshprep/quality/topology.h"
+#include "meshprep/report/number_format.h"
 
 #include <algorithm>
 #include <iomanip>

@@ -1,6 +1,6 @@
 # Install rules (MESHPREP_INSTALL): every registered module's static library and headers, the
 # umbrella target, the exported targets (namespace meshprep::), meshprepConfig.cmake with its
-# version file and FindTetGen.cmake, so that another project can
+# version file and the find modules (TetGen, GMP), so that another project can
 #   find_package(meshprep REQUIRED)
 #   target_link_libraries(app PRIVATE meshprep::meshprep)
 # Included after meshprep_add_umbrella_target(), once every module has registered itself.
@@ -19,8 +19,8 @@ foreach(module IN LISTS meshprep_modules)
   install(DIRECTORY ${module_dir}/include/ TYPE INCLUDE FILES_MATCHING PATTERN "*.h")
 endforeach()
 
-# 3. The exported targets, the package config and its version, and the TetGen find module the
-#    config needs (the static libraries carry TetGen::tetgen as a link-only dependency).
+# 3. The exported targets, the package config and its version, and the find modules the config
+#    needs (the static libraries carry TetGen::tetgen and GMP::gmp as link-only dependencies).
 install(EXPORT meshprepTargets NAMESPACE meshprep:: DESTINATION ${MESHPREP_CONFIG_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/meshprepConfig.cmake.in
   ${PROJECT_BINARY_DIR}/meshprepConfig.cmake INSTALL_DESTINATION ${MESHPREP_CONFIG_DIR})
@@ -28,5 +28,6 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/meshprepConfig.cmake.i
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/meshprepConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/meshprepConfig.cmake ${PROJECT_BINARY_DIR}/meshprepConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/FindTetGen.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/FindTetGen.cmake ${PROJECT_SOURCE_DIR}/cmake/FindGMP.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/meshprep_find_imported.cmake
         DESTINATION ${MESHPREP_CONFIG_DIR})

@@ -20,7 +20,7 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/io.h"
 #include "meshprep/quality/report.h"
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include <iostream>
 #include <string>

@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev libpng-dev
   zlib1g-dev  # the .vtu reader inflates vtkZLibDataCompressor data
+  libgmp-dev  # the exact stage of quality/'s orientation predicates
   python3
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy

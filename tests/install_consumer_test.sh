@@ -23,7 +23,7 @@ for target in "${modules[@]}"; do
   compgen -G "$prefix/include/meshprep/$module/*.h" > /dev/null || fail "no headers in include/meshprep/$module"
 done
 config=$(compgen -G "$prefix/lib*/cmake/meshprep" | head -1) || fail "no lib/cmake/meshprep"
-for file in meshprepConfig.cmake meshprepConfigVersion.cmake meshprepTargets.cmake FindTetGen.cmake; do
+for file in meshprepConfig.cmake meshprepConfigVersion.cmake meshprepTargets.cmake FindTetGen.cmake FindGMP.cmake; do
   [ -f "$config/$file" ] || fail "$file not installed"
 done
 "$prefix/bin/meshprep" --version > /dev/null || fail "the installed CLI does not run"

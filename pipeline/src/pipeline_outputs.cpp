@@ -7,8 +7,8 @@
 #include "meshprep/core/io.h"
 #include "meshprep/core/unique_fd.h"
 #include "meshprep/fem/export.h"
-#include "meshprep/quality/report_writers.h"
 #include "meshprep/quality/surface_variation.h"
+#include "meshprep/report/report_writers.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

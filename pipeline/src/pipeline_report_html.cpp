@@ -2,9 +2,9 @@
 
 #include "meshprep/pipeline/pipeline_outputs.h"
 
-#include "meshprep/quality/html_report.h"
-#include "meshprep/quality/number_format.h"
-#include "meshprep/quality/surface_picture.h"
+#include "meshprep/report/html_report.h"
+#include "meshprep/report/number_format.h"
+#include "meshprep/report/surface_picture.h"
 
 #include <cmath>
 #include <sstream>

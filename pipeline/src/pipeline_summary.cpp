@@ -2,8 +2,8 @@
 
 #include "meshprep/pipeline/pipeline_outputs.h"
 
-#include "meshprep/quality/json_values.h"
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/json_values.h"
+#include "meshprep/report/report_writers.h"
 
 namespace meshprep {
 namespace {

@@ -5,7 +5,6 @@
 
 #include "neighbour_pairs.h"
 #include "plane_separation.h"
-#include "robust_predicates.h"
 
 #include <tbb/enumerable_thread_specific.h>
 
@@ -68,7 +67,6 @@ bool faces_intersect(const TriangleSoup& soup, const Triangle& a, const Triangle
 
 SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t cap) {
   const std::size_t n = soup.triangles.size();
-  detail::reset_robust_predicates();  // before the parallel section: TetGen may have changed them
   std::vector<char> valid(n);
   for (std::size_t f = 0; f < n; ++f) valid[f] = has_area(soup, soup.triangles[f]) ? 1 : 0;
   // Each thread keeps the pairs it found; sorted together afterwards, whatever the threads did.

@@ -1,6 +1,6 @@
 // Uses the installed meshprep headers and libraries: reads a mesh and prints its face count,
 // whether it is closed, and its radius ratio p95 (analyze_quality runs the self-intersection test
-// on TetGen's exact predicates, so the link needs the package's dependencies too).
+// on exact predicates backed by GMP, so the link needs the package's dependencies too).
 // Usage: install_consumer MESH; exit 2 if the mesh cannot be read.
 #include <meshprep/core/errors.h>
 #include <meshprep/core/io.h>

@@ -14,7 +14,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/fem/tet_quality.h"
-#include "meshprep/quality/number_format.h"
+#include "meshprep/report/number_format.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>

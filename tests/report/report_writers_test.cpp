@@ -1,8 +1,8 @@
 // The report writers on a hand-built report (independent of analyze_quality).
 
 #include "meshprep/core/errors.h"
-#include "meshprep/quality/report_writers.h"
 #include "meshprep/quality/surface_variation.h"
+#include "meshprep/report/report_writers.h"
 #include "scratch_dir.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // write_text_summary: the report as an aligned plain-text table (no colours: it may be piped).
 
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include "report_summary.h"
 

@@ -1,4 +1,4 @@
-#include "meshprep/quality/surface_picture.h"
+#include "meshprep/report/surface_picture.h"
 
 #include "meshprep/core/errors.h"
 

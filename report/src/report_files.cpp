@@ -1,12 +1,12 @@
 // write_csv and write_vtk: the per-face metrics of a report, for spreadsheets and ParaView; the VTK
 // file also holds the per-vertex surface variation, the paper's "curvature analysis" picture.
 
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
-#include "meshprep/quality/number_format.h"
 #include "meshprep/quality/surface_variation.h"
+#include "meshprep/report/number_format.h"
 
 #include "face_metrics.h"
 

@@ -1,10 +1,10 @@
 // The report's pictures of a surface: the views from its principal axes, the PNG images as data
 // URIs, the caption and the colour legend.
 
-#include "meshprep/quality/surface_picture.h"
+#include "meshprep/report/surface_picture.h"
 
-#include "meshprep/quality/html_report.h"
-#include "meshprep/quality/number_format.h"
+#include "meshprep/report/html_report.h"
+#include "meshprep/report/number_format.h"
 
 #include "base64.h"
 

@@ -1,9 +1,9 @@
 // svg_histogram and escape: a bar chart as inline SVG, drawn with plain elements (no script, no external resource).
 
-#include "meshprep/quality/html_report.h"
+#include "meshprep/report/html_report.h"
 
 #include "meshprep/core/errors.h"
-#include "meshprep/quality/number_format.h"
+#include "meshprep/report/number_format.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 // write_html: one self-contained page (inline CSS, SVG and PNG, no script, no external resource).
 
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include "meshprep/core/atomic_file.h"
-#include "meshprep/quality/html_report.h"
-#include "meshprep/quality/number_format.h"
-#include "meshprep/quality/surface_picture.h"
+#include "meshprep/report/html_report.h"
+#include "meshprep/report/number_format.h"
+#include "meshprep/report/surface_picture.h"
 
 #include "report_summary.h"
 

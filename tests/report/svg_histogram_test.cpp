@@ -1,5 +1,5 @@
 // svg_histogram's count axis: linear, or logarithmic so that a thin tail shows.
-#include "meshprep/quality/html_report.h"
+#include "meshprep/report/html_report.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The shared pieces of the HTML reports: page frame and style, badges, the per-face histograms.
 
-#include "meshprep/quality/html_report.h"
+#include "meshprep/report/html_report.h"
 
-#include "meshprep/quality/number_format.h"
+#include "meshprep/report/number_format.h"
 
 #include "report_summary.h"
 

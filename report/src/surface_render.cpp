@@ -1,7 +1,7 @@
 // render_surface: an orthographic z-buffer rasteriser (hidden surfaces removed per pixel), drawn
 // at twice the resolution and averaged down, and the green-yellow-red quality colour scale.
 
-#include "meshprep/quality/surface_picture.h"
+#include "meshprep/report/surface_picture.h"
 
 #include "meshprep/core/errors.h"
 

@@ -2,7 +2,7 @@
 // data, in VTK's XML unstructured-grid format (ParaView, meshio). Arrays are inline binary
 // (base64 of a UInt64 byte count followed by the little-endian values), so inf and NaN survive.
 
-#include "meshprep/quality/report_writers.h"
+#include "meshprep/report/report_writers.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/quality/surface_variation.h"

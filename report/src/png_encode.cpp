@@ -1,7 +1,7 @@
 // encode_png: libpng writing into memory. libpng reports errors by longjmp, so nothing with a
 // destructor is created between setjmp and the end of the write.
 
-#include "meshprep/quality/surface_picture.h"
+#include "meshprep/report/surface_picture.h"
 
 #include "meshprep/core/errors.h"
 
