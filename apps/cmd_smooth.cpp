@@ -8,7 +8,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/smooth.h"
+#include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/quality/json_values.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/report_writers.h"
