@@ -7,7 +7,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/enhance.h"
+#include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/report/report_writers.h"
 

@@ -8,8 +8,9 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/reconstruct.h"
-#include "meshprep/preprocess/variation_rule.h"
+#include "meshprep/preprocess/compose/adaptive_reconstruction.h"
+#include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/reconstruct/variation_rule.h"
 #include "meshprep/report/json_values.h"
 
 #include <chrono>
@@ -44,7 +45,6 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.rows = o.resolution[1];
   params.spacing = o.spacing;
   params.vertices = o.vertices;
-  params.adaptive = o.adaptive;
   params.fill_holes = o.fill_holes;
   params.max_gap = o.max_gap;
   params.fit.leaf_size = o.leaf_size;
@@ -52,9 +52,11 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.fit.variation_growth = o.variation_growth;
   apply_variation_rule(o.variation_threshold, params.fit);  // checked by CLI11
   ProgressBar bar("reconstruct");
-  params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
+  const AdaptiveReconstructParams adaptive{params, stoppable([&bar](double fraction) { bar.update(fraction); })};
   const auto start = std::chrono::steady_clock::now();
-  const ReconstructResult result = run_stage_on(o.input, [&] { return reconstruct_surface(input.points, params); });
+  const ReconstructResult result = run_stage_on(o.input, [&] {
+    return o.adaptive ? reconstruct_adaptive(input.points, adaptive) : reconstruct_surface(input.points, params);
+  });
   bar.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.mesh.triangles.empty())

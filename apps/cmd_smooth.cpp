@@ -8,7 +8,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/smooth.h"
+#include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"

@@ -10,8 +10,9 @@
 //      [--variation-threshold T | --variation-percentile P] [--variation-growth G] [--quadratic]
 //      [--no-adaptive]  (needs ../shared/data)
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/partition_of_unity.h"
-#include "meshprep/preprocess/reconstruct.h"
+#include "meshprep/preprocess/compose/adaptive_reconstruction.h"
+#include "meshprep/preprocess/reconstruct/partition_of_unity.h"
+#include "meshprep/preprocess/reconstruct/reconstruct.h"
 
 #include <nanoflann.hpp>
 #include <tetgen.h>
@@ -292,10 +293,9 @@ int main(int argc, char** argv) {
   // The meshes themselves, linear between their vertices: what a user gets in the file.
   for (const bool adaptive : {false, true}) {
     if (adaptive && !with_adaptive) continue;
-    meshprep::ReconstructParams mesh_params = params;
-    mesh_params.adaptive = adaptive;
     const auto start = std::chrono::steady_clock::now();
-    const meshprep::TriangleSoup mesh = meshprep::reconstruct_surface(sample, mesh_params).mesh;
+    const meshprep::TriangleSoup mesh = adaptive ? meshprep::reconstruct_adaptive(sample, {params, {}}).mesh
+                                                 : meshprep::reconstruct_surface(sample, params).mesh;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const LinearInterpolant linear(mesh.points, mesh.triangles);
     for (std::size_t i = 0; i < held_out.size(); ++i) predicted[i] = linear(held_out[i].head<2>());

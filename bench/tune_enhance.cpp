@@ -25,7 +25,7 @@
 // DATA_DIR defaults to ../shared/data beside the clone; skipped (exit 0) when its meshes are absent.
 #include "meshprep/core/io.h"
 #include "meshprep/core/mesh.h"
-#include "meshprep/preprocess/enhance.h"
+#include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/quality/report.h"
 
 #include <ceres/ceres.h>

@@ -19,8 +19,8 @@
 #include "run_example.h"
 
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/enhance.h"
-#include "meshprep/preprocess/simplify.h"
+#include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/simplify/simplify.h"
 #include "meshprep/quality/report.h"
 
 #include <algorithm>

@@ -26,9 +26,9 @@
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/fem/tetrahedralize.h"
-#include "meshprep/preprocess/enhance.h"
-#include "meshprep/preprocess/reconstruct.h"
-#include "meshprep/preprocess/simplify.h"
+#include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/simplify/simplify.h"
 #include "meshprep/quality/surface_distance.h"
 
 #include <cmath>

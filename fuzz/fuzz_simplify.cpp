@@ -10,7 +10,7 @@
 #include "fuzz_support.h"
 
 #include "meshprep/core/mesh.h"
-#include "meshprep/preprocess/simplify.h"
+#include "meshprep/preprocess/simplify/simplify.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace meshprep;

@@ -20,7 +20,8 @@ fail() { echo "FAIL: $*"; exit 1; }
 for target in "${modules[@]}"; do
   module=${target#meshprep_}
   compgen -G "$prefix/lib*/lib$target.a" > /dev/null || fail "lib$target.a not installed"
-  compgen -G "$prefix/include/meshprep/$module/*.h" > /dev/null || fail "no headers in include/meshprep/$module"
+  compgen -G "$prefix/include/meshprep/$module/*.h" > /dev/null || compgen -G "$prefix/include/meshprep/$module/*/*.h" > /dev/null \
+    || fail "no headers in include/meshprep/$module"
 done
 config=$(compgen -G "$prefix/lib*/cmake/meshprep" | head -1) || fail "no lib/cmake/meshprep"
 for file in meshprepConfig.cmake meshprepConfigVersion.cmake meshprepTargets.cmake FindTetGen.cmake FindGMP.cmake; do

@@ -6,10 +6,11 @@
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/tetrahedralize.h"
-#include "meshprep/preprocess/enhance.h"
-#include "meshprep/preprocess/reconstruct.h"
-#include "meshprep/preprocess/simplify.h"
-#include "meshprep/preprocess/smooth.h"
+#include "meshprep/preprocess/compose/adaptive_reconstruction.h"
+#include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/simplify/simplify.h"
+#include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/quality/triangle_metrics.h"
 
 #include <chrono>
@@ -141,12 +142,12 @@ class Run {
     StageRecord record = started("reconstruct");
     const PointSet points = read_points(result_.input);
     result_.input_points = points.points.size();
-    ReconstructParams params = config_.reconstruct.params;
-    params.progress = progress();
+    const ReconstructParams& params = config_.reconstruct.params;
     const Clock::time_point start = Clock::now();
     ReconstructResult reconstruction;
     try {
-      reconstruction = reconstruct_surface(points.points, params);
+      reconstruction = config_.reconstruct.adaptive ? reconstruct_adaptive(points.points, {params, progress()})
+                                                    : reconstruct_surface(points.points, params);
     } catch (const InvalidInput& e) {
       throw InvalidInput(result_.input + ": " + e.what());
     }

@@ -4,7 +4,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/variation_rule.h"
+#include "meshprep/preprocess/reconstruct/variation_rule.h"
 
 #include <cmath>
 #include <functional>
@@ -168,7 +168,7 @@ std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {
   keys.push_back(flag("reconstruct", "fill_holes", p.fill_holes,
                       "keep the triangles over interior gaps, flagged in the report, so the terrain can be closed "
                       "into a block; false leaves them out"));
-  keys.push_back(flag("reconstruct", "adaptive", p.adaptive,
+  keys.push_back(flag("reconstruct", "adaptive", r.adaptive,
                       "vertices dense where the surface bends, sparse where flat (slower)"));
   return keys;
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file pipeline_config.h
 /// Every setting of `meshprep pipeline`, grouped by stage, with its JSON form. The defaults are the
-/// stage libraries' own (reconstruct.h, simplify.h, smooth.h, enhance.h, report.h,
+/// stage libraries' own (reconstruct.h, adaptive_reconstruction.h, simplify.h, smooth.h, enhance.h, report.h,
 /// tetrahedralize.h) except where a field says otherwise; docs/pipeline.md lists every key.
 ///
 /// The file is one JSON object of sections ("reconstruct", "simplify", "smooth", "enhance",
@@ -14,10 +14,10 @@
 #include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/tetrahedralize.h"
-#include "meshprep/preprocess/enhance.h"
-#include "meshprep/preprocess/reconstruct.h"
-#include "meshprep/preprocess/simplify.h"
-#include "meshprep/preprocess/smooth.h"
+#include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/simplify/simplify.h"
+#include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/quality/report.h"
 
 #include <nlohmann/json.hpp>
@@ -32,6 +32,8 @@ struct PipelineConfig {
   struct Reconstruct {  ///< points input only
     ReconstructParams params = defaults();
     std::string variation_threshold = "p90";  ///< text form, see variation_rule.h (applied to params.fit)
+    /// Vertices placed by local features (adaptive_reconstruction.h) instead of the uniform grid.
+    bool adaptive = false;
     /// The pipeline keeps interior gaps, flagged (ReconstructParams::fill_holes), so that the
     /// terrain has one boundary loop and can be closed into a block.
     static ReconstructParams defaults() {

@@ -1,0 +1,49 @@
+#pragma once
+// Step 4 of the enhancement (enhance.h): the moves of a round that must be taken back.
+
+#include "enhance/surface_constraints.h"
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/quality/triangle_bvh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace meshprep::detail {
+
+/// Distance of every point of `reference` to the mesh, and the face where it is reached.
+std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const TriangleSoup& reference);
+
+/// Takes back, vertex by vertex (to where the round found it), every move that:
+/// - turns a face by more than 60 degrees (or folds it over);
+/// - carries a face (its centroid or an edge midpoint) farther from the reference than the bound,
+///   and than it was;
+/// - leaves a reference vertex farther from the mesh than allowed (the bound, or the input's own
+///   distance);
+/// - makes the surface cross itself beyond the pairs the input had.
+/// Putting a vertex back can upset another guard (a face half old, half new), so the guards run
+/// in passes until none puts anything back; each pass measures only what the previous one changed.
+class MoveGuards {
+ public:
+  /// `mesh` as the round found it (before any move); its topology must not change until enforce().
+  MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraints, const std::vector<double>& allowed_distance,
+             std::size_t allowed_intersections, double max_deviation);
+
+  /// Returns the number of vertices put back.
+  std::size_t enforce(TriMesh& mesh) const;
+
+ private:
+  std::size_t undo_bad_faces(TriMesh& mesh, const std::vector<char>& dirty) const;
+  std::size_t undo_uncovering(TriMesh& mesh, const std::vector<char>& dirty, std::vector<std::size_t>& nearest_face) const;
+  bool moved(const TriMesh& mesh, TriMesh::VertexHandle v) const;
+  std::size_t put_back(TriMesh& mesh, TriMesh::FaceHandle f) const;
+
+  const SurfaceConstraints& constraints_;
+  const std::vector<double>& allowed_distance_;
+  std::size_t allowed_intersections_;
+  double max_deviation_;
+  std::vector<TriMesh::Point> before_;
+  std::vector<TriangleBvh::Hit> coverage_before_;
+};
+
+}  // namespace meshprep::detail
