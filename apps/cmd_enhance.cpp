@@ -25,16 +25,6 @@ struct EnhanceOptions {
   std::size_t threads = 0;
 };
 
-nlohmann::ordered_json tail_json(const QualityTail& tail) {
-  nlohmann::ordered_json json;
-  json["mean_q"] = tail.mean_q;
-  json["stddev_q"] = tail.stddev_q;
-  json["q_p05"] = tail.q_p05;
-  json["under_target_fraction"] = tail.under_target_fraction;
-  json["min_angle_deg"] = tail.min_angle_deg;
-  return json;
-}
-
 int run_enhance(EnhanceOptions o) {
   const ThreadLimit parallelism(o.threads);
   ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
@@ -68,26 +58,7 @@ int run_enhance(EnhanceOptions o) {
   json["reference"] = reference ? nlohmann::ordered_json(o.reference) : nlohmann::ordered_json(nullptr);
   json["faces_before"] = loaded.soup.triangles.size();
   json["faces_after"] = output.triangles.size();
-  json["rounds"] = result.rounds;
-  json["kept_round"] = result.kept_round;
-  json["flips"] = result.flips;
-  json["removed_vertices"] = result.removed_vertices;
-  json["split_edges"] = result.split_edges;
-  json["line_vertices"] = result.line_vertices;
-  json["fixed_vertices"] = result.fixed_vertices;
-  json["undone_moves"] = result.undone_moves;
-  json["parameters"] = {{"max_deviation", result.max_deviation},
-                        {"max_deviation_auto", !o.params.max_deviation},
-                        {"target_min_angle_deg", o.params.target_min_angle_deg},
-                        {"feature_angle_deg", o.params.feature_angle_deg},
-                        {"tail_k", o.params.tail_k},
-                        {"tail_weight", o.params.tail_weight},
-                        {"fidelity_weight", o.params.fidelity_weight},
-                        {"flip_dihedral_deg", o.params.flip_dihedral_deg},
-                        {"flips", o.params.flips}};
-  json["tail_before"] = tail_json(result.before);
-  json["tail_after"] = tail_json(result.after);
-  json["time_seconds"] = result.seconds;
+  json.update(to_json(result, o.params));
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-")

@@ -88,27 +88,7 @@ int run_simplify(const SimplifyOptions& o) {
   json["cost"] = o.cost;
   json["min_angle_deg"] = o.min_angle;
   json["max_error"] = o.max_error;
-  json["faces_before"] = result.faces_before;
-  json["faces_after"] = result.faces_after;
-  json["target_faces"] = result.target_faces;
-  json["reached_target"] = result.reached_target;
-  json["time_seconds"] = result.seconds;
-  json["collapses"] = result.collapses;
-  json["rejected"] = {{"topology", result.rejected_topology},
-                      {"shape", result.rejected_shape},
-                      {"max_error", result.rejected_error}};
-  json["energy_evaluations"] = result.energy_evaluations;
-  json["intersection_retries"] = result.intersection_retries;
-  json["reshapes"] = result.reshapes;
-  json["stuck_restarts"] = result.stuck_restarts;
-  json["queue_order"] = result.banded_queue ? "cost_bands" : "cost";
-  json["polish"] = {{"flips", result.polish_flips}, {"moves", result.polish_moves}, {"fit_moves", result.fit_moves}};
-  if (o.enhance)
-    json["enhance"] = {{"stages", enhanced.stages},
-                       {"rounds", enhanced.rounds},
-                       {"flips", enhanced.flips},
-                       {"removed_vertices", enhanced.removed_vertices},
-                       {"split_edges", enhanced.split_edges}};
+  json.update(o.enhance ? to_json(enhanced) : to_json(result));
   json["input_topology"] = input_topology;
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);

@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
 #include <iomanip>
 #include <sstream>
 
@@ -24,6 +25,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The keys of a stage's record (its Result's to_json) that the pipeline's summary keeps, in order.
+nlohmann::ordered_json picked(const nlohmann::ordered_json& record, std::initializer_list<const char*> keys) {
+  nlohmann::ordered_json kept;
+  for (const char* key : keys) kept[key] = record.at(key);
+  return kept;
+}
 
 // A figure for a one-line note: `digits` significant digits.
 std::string figure(double value, int digits = 3) {
@@ -241,11 +249,8 @@ class Run {
     params.progress = progress();
     const SimplifyResult s = on_input([&] { return simplify(mesh_, params); });
     record.seconds = s.seconds;
-    record.details = {{"target_faces", s.target_faces},
-                      {"reached_target", s.reached_target},
-                      {"collapses", s.collapses},
-                      {"intersection_retries", s.intersection_retries},
-                      {"stuck_restarts", s.stuck_restarts}};
+    record.details =
+        picked(to_json(s), {"target_faces", "reached_target", "collapses", "intersection_retries", "stuck_restarts"});
     if (!s.reached_target) record.note = "target " + std::to_string(s.target_faces) + " faces not reached";
     measure(record);
     finish(std::move(record));
@@ -274,13 +279,9 @@ class Run {
     params.progress = progress();
     const EnhanceResult e = on_input([&] { return enhance(mesh_, &result_.input_surface, params); });
     record.seconds = e.seconds;
-    record.details = {{"rounds", e.rounds},
-                      {"kept_round", e.kept_round},
-                      {"flips", e.flips},
-                      {"removed_vertices", e.removed_vertices},
-                      {"split_edges", e.split_edges},
-                      {"smallest_angle_before_deg", e.before.min_angle_deg},
-                      {"smallest_angle_after_deg", e.after.min_angle_deg}};
+    record.details = picked(to_json(e, params), {"rounds", "kept_round", "flips", "removed_vertices", "split_edges"});
+    record.details["smallest_angle_before_deg"] = e.before.min_angle_deg;
+    record.details["smallest_angle_after_deg"] = e.after.min_angle_deg;
     record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";
     measure(record);
     finish(std::move(record));

@@ -68,4 +68,14 @@ SimplifyAndEnhanceResult simplify_and_enhance(TriMesh& mesh, const SimplifyAndEn
   return result;
 }
 
+nlohmann::ordered_json to_json(const SimplifyAndEnhanceResult& result) {
+  nlohmann::ordered_json json = to_json(result.simplify);
+  json["enhance"] = {{"stages", result.stages},
+                     {"rounds", result.rounds},
+                     {"flips", result.flips},
+                     {"removed_vertices", result.removed_vertices},
+                     {"split_edges", result.split_edges}};
+  return json;
+}
+
 }  // namespace meshprep

@@ -39,4 +39,8 @@ struct SimplifyAndEnhanceResult {
 /// \throws InvalidInput as simplify() and enhance() do.
 SimplifyAndEnhanceResult simplify_and_enhance(TriMesh& mesh, const SimplifyAndEnhanceParams& params = {});
 
+/// The reductions' record (to_json of SimplifyResult) followed by "enhance": {stages, rounds,
+/// flips, removed_vertices, split_edges}, as `meshprep simplify --enhance --json` writes it.
+nlohmann::ordered_json to_json(const SimplifyAndEnhanceResult& result);
+
 }  // namespace meshprep

@@ -17,6 +17,8 @@
 
 #include "meshprep/core/mesh.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -71,5 +73,14 @@ struct EnhanceResult {
 /// Enhance `mesh` in place. `reference` is the surface to stay on (the original mesh); nullptr
 /// means the input itself. \throws InvalidInput if params are out of range or the mesh is empty.
 EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const EnhanceParams& params = {});
+
+/// {mean_q, stddev_q, q_p05, under_target_fraction, min_angle_deg}.
+nlohmann::ordered_json to_json(const QualityTail& tail);
+
+/// The run as `meshprep enhance --json` writes it, in this order: rounds, kept_round, flips,
+/// removed_vertices, split_edges, line_vertices, fixed_vertices, undone_moves, parameters (the
+/// bound used, whether it was automatic, and the settings of `params`), tail_before, tail_after,
+/// time_seconds. The pipeline's stage record picks from it.
+nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams& params);
 
 }  // namespace meshprep

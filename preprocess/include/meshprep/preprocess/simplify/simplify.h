@@ -28,6 +28,8 @@
 
 #include "meshprep/core/mesh.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cstddef>
 #include <functional>
 
@@ -94,5 +96,11 @@ std::size_t simplify_target(const TriMesh& mesh, const SimplifyParams& params);
 
 /// Whether `faces` is within 1 % of `target` (at least one face): SimplifyResult::reached_target.
 bool reaches_target(std::size_t faces, std::size_t target);
+
+/// The result as `meshprep simplify --json` writes it, in this order: faces_before, faces_after,
+/// target_faces, reached_target, time_seconds, collapses, rejected {topology, shape, max_error},
+/// energy_evaluations, intersection_retries, reshapes, stuck_restarts, queue_order ("cost" or
+/// "cost_bands"), polish {flips, moves, fit_moves}. The pipeline's stage record picks from it.
+nlohmann::ordered_json to_json(const SimplifyResult& result);
 
 }  // namespace meshprep

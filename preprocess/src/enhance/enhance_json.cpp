@@ -1,0 +1,40 @@
+#include "meshprep/preprocess/enhance/enhance.h"
+
+namespace meshprep {
+
+nlohmann::ordered_json to_json(const QualityTail& tail) {
+  nlohmann::ordered_json json;
+  json["mean_q"] = tail.mean_q;
+  json["stddev_q"] = tail.stddev_q;
+  json["q_p05"] = tail.q_p05;
+  json["under_target_fraction"] = tail.under_target_fraction;
+  json["min_angle_deg"] = tail.min_angle_deg;
+  return json;
+}
+
+nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams& params) {
+  nlohmann::ordered_json json;
+  json["rounds"] = result.rounds;
+  json["kept_round"] = result.kept_round;
+  json["flips"] = result.flips;
+  json["removed_vertices"] = result.removed_vertices;
+  json["split_edges"] = result.split_edges;
+  json["line_vertices"] = result.line_vertices;
+  json["fixed_vertices"] = result.fixed_vertices;
+  json["undone_moves"] = result.undone_moves;
+  json["parameters"] = {{"max_deviation", result.max_deviation},
+                        {"max_deviation_auto", !params.max_deviation},
+                        {"target_min_angle_deg", params.target_min_angle_deg},
+                        {"feature_angle_deg", params.feature_angle_deg},
+                        {"tail_k", params.tail_k},
+                        {"tail_weight", params.tail_weight},
+                        {"fidelity_weight", params.fidelity_weight},
+                        {"flip_dihedral_deg", params.flip_dihedral_deg},
+                        {"flips", params.flips}};
+  json["tail_before"] = to_json(result.before);
+  json["tail_after"] = to_json(result.after);
+  json["time_seconds"] = result.seconds;
+  return json;
+}
+
+}  // namespace meshprep
