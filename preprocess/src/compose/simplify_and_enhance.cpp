@@ -3,6 +3,8 @@
 #include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <cmath>
 

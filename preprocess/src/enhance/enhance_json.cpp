@@ -1,5 +1,7 @@
 #include "meshprep/preprocess/enhance/enhance.h"
 
+#include <nlohmann/json.hpp>
+
 namespace meshprep {
 
 nlohmann::ordered_json to_json(const QualityTail& tail) {

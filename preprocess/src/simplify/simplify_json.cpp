@@ -1,5 +1,7 @@
 #include "meshprep/preprocess/simplify/simplify.h"
 
+#include <nlohmann/json.hpp>
+
 namespace meshprep {
 
 nlohmann::ordered_json to_json(const SimplifyResult& result) {

@@ -28,7 +28,7 @@
 
 #include "meshprep/core/mesh.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstddef>
 #include <functional>
