@@ -11,6 +11,7 @@ packages=(
   zlib1g-dev  # the .vtu reader inflates vtkZLibDataCompressor data
   libgmp-dev  # the exact stage of quality/'s orientation predicates
   python3
+  ccache  # the builds of scripts/build.sh and run-tests.sh reuse what an earlier build compiled
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy
   # the browser that renders the HTML reports in the tests

@@ -24,7 +24,10 @@ bash scripts/build.sh -DMESHPREP_WERROR=ON
 [ "$mode" != --release-only ] || exit 0
 
 echo "== ASan + UBSan build, tests and fuzz targets"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DMESHPREP_BUILD_FUZZERS=ON \
+launcher=()  # as in scripts/build.sh
+! command -v ccache >/dev/null || launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+export CCACHE_BASEDIR=$PWD
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DMESHPREP_BUILD_FUZZERS=ON "${launcher[@]}" \
   -DMESHPREP_WERROR=ON -DMESHPREP_BUILD_BENCH=OFF -DMESHPREP_BUILD_EXAMPLES=OFF -DMESHPREP_INSTALL=OFF >/dev/null
 if [ "$mode" = --sanitize-all ]; then
   cmake --build build-sanitize -j "$jobs"
