@@ -11,7 +11,7 @@
 #include "meshprep/preprocess/compose/adaptive_reconstruction.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
-#include "meshprep/report/json_values.h"
+#include "meshprep/quality/json_values.h"
 
 #include <chrono>
 #include <iostream>

@@ -9,10 +9,10 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/smooth/smooth.h"
+#include "meshprep/quality/json_values.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"
-#include "meshprep/report/json_values.h"
 #include "meshprep/report/report_writers.h"
 
 #include <cmath>
@@ -61,27 +61,7 @@ int run_smooth(SmoothOptions o) {
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
-  json["method"] = o.method;
-  json["iterations"] = result.iterations;
-  if (o.params.method == SmoothMethod::Rbf) {
-    json["neighbors"] = o.params.neighbors;
-    json["smoothing"] = std::isinf(o.params.smoothing) ? nlohmann::ordered_json("inf") : nlohmann::ordered_json(o.params.smoothing);
-    json["relaxation"] = o.params.relaxation;
-    json["feature_angle_deg"] = o.params.feature_angle_deg;
-    json["noise_crease_vertices"] = result.noise_crease_vertices;
-    json["vertices_kept"] = {{"corners", result.corner_vertices},
-                             {"boundary", result.boundary_vertices},
-                             {"unfitted", result.unfitted_vertices},
-                             {"undone_for_self_intersections", result.undone_vertices}};
-    json["feature_line_vertices"] = result.feature_line_vertices;
-  }
-  json["preserve_volume"] = o.params.preserve_volume;
-  json["volume_before"] = result.volume_before ? json_number(*result.volume_before) : nullptr;
-  json["volume_after"] = result.volume_after ? json_number(*result.volume_after) : nullptr;
-  json["volume_change_relative"] =
-      result.volume_before ? json_number(*result.volume_after / *result.volume_before - 1) : nullptr;
-  json["max_displacement"] = result.max_displacement;
-  json["time_seconds"] = result.seconds;
+  json.update(to_json(result, o.params));
   json["input_radius_ratio"] = json_distribution(summarize(input_radius_ratio));
   json["input_self_intersections"] = input_intersections;
   json["quality"] = to_json(quality);

@@ -1,7 +1,7 @@
 #include "meshprep/fem/fem_verdict.h"
 
 #include "meshprep/core/errors.h"
-#include "meshprep/report/json_values.h"
+#include "meshprep/quality/json_values.h"
 #include "meshprep/report/number_format.h"
 
 #include <cmath>

@@ -2,9 +2,9 @@
 // aspect ratio (C. J. Stimpson, C. D. Ernst, P. Knupp, P. P. Pebay, D. Thompson, "The Verdict
 // Geometric Quality Library", SAND2007-1751, 2007; sandialabs/verdict V_TetMetric.cpp).
 #include "meshprep/fem/tet_quality.h"
-#include "meshprep/report/json_values.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/quality/json_values.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

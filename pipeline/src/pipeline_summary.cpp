@@ -2,7 +2,7 @@
 
 #include "meshprep/pipeline/pipeline_outputs.h"
 
-#include "meshprep/report/json_values.h"
+#include "meshprep/quality/json_values.h"
 #include "meshprep/report/report_writers.h"
 
 namespace meshprep {

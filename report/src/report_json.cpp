@@ -1,6 +1,6 @@
 // to_json: the machine interface of the quality report. Key names and order are stable.
 
-#include "meshprep/report/json_values.h"
+#include "meshprep/quality/json_values.h"
 #include "meshprep/report/report_writers.h"
 
 #include <cmath>

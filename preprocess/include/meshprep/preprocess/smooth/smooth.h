@@ -27,6 +27,8 @@
 
 #include "meshprep/core/mesh.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -68,5 +70,13 @@ struct SmoothResult {
 
 /// Smooth `mesh` in place. \throws InvalidInput if params are out of range.
 SmoothResult smooth(TriMesh& mesh, const SmoothParams& params = {});
+
+/// The run as `meshprep smooth --json` writes it, in this order: method ("rbf", "taubin" or
+/// "laplace"), iterations; for Rbf its settings (neighbors, smoothing: "inf" for interpolation,
+/// relaxation, feature_angle_deg) and vertex counts (noise_crease_vertices, vertices_kept
+/// {corners, boundary, unfitted, undone_for_self_intersections}, feature_line_vertices); then
+/// preserve_volume, volume_before, volume_after, volume_change_relative (null on an open mesh),
+/// max_displacement, time_seconds. The pipeline's stage record picks from it.
+nlohmann::ordered_json to_json(const SmoothResult& result, const SmoothParams& params);
 
 }  // namespace meshprep
