@@ -1,5 +1,6 @@
 // Conversions between the halfedge mesh and the indexed triangle soup.
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include "meshprep/core/errors.h"
 
@@ -26,6 +27,37 @@ class SilencedOmerr {
 
 }  // namespace
 
+namespace {
+
+// The faces of `mesh` not deleted, in index order, each with its corners from its halfedge on,
+// numbered by `renumber(vertex index)` (shared by soup_from_mesh and MeshSoupView, which must agree).
+template <class Renumber>
+std::vector<Triangle> triangles_of(const TriMesh& mesh, const Renumber& renumber) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(mesh.n_faces());
+  for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+    const TriMesh::FaceHandle fh(static_cast<int>(f));
+    if (mesh.has_face_status() && mesh.status(fh).deleted()) continue;
+    TriMesh::HalfedgeHandle he = mesh.halfedge_handle(fh);
+    Triangle triangle{};
+    for (std::uint32_t& corner : triangle) {
+      corner = renumber(mesh.to_vertex_handle(he).idx());
+      he = mesh.next_halfedge_handle(he);
+    }
+    triangles.push_back(triangle);
+  }
+  return triangles;
+}
+
+bool has_deleted_vertex(const TriMesh& mesh) {
+  if (!mesh.has_vertex_status()) return false;
+  for (std::size_t v = 0; v < mesh.n_vertices(); ++v)
+    if (mesh.status(TriMesh::VertexHandle(static_cast<int>(v))).deleted()) return true;
+  return false;
+}
+
+}  // namespace
+
 TriangleSoup soup_from_mesh(const TriMesh& mesh) {
   constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
   TriangleSoup soup;
@@ -37,19 +69,31 @@ TriangleSoup soup_from_mesh(const TriMesh& mesh) {
     new_index[v] = static_cast<std::uint32_t>(soup.points.size());
     soup.points.push_back(to_eigen(mesh.point(vh)));
   }
-  soup.triangles.reserve(mesh.n_faces());
-  for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-    const TriMesh::FaceHandle fh(static_cast<int>(f));
-    if (mesh.has_face_status() && mesh.status(fh).deleted()) continue;
-    TriMesh::HalfedgeHandle he = mesh.halfedge_handle(fh);
-    Triangle triangle{};
-    for (std::uint32_t& corner : triangle) {
-      corner = new_index[mesh.to_vertex_handle(he).idx()];
-      if (corner == unused) throw Error("soup_from_mesh: a face uses a deleted vertex");
-      he = mesh.next_halfedge_handle(he);
-    }
-    soup.triangles.push_back(triangle);
+  soup.triangles = triangles_of(mesh, [&](int v) {
+    const std::uint32_t corner = new_index[static_cast<std::size_t>(v)];
+    if (corner == unused) throw Error("soup_from_mesh: a face uses a deleted vertex");
+    return corner;
+  });
+  return soup;
+}
+
+MeshSoupView::MeshSoupView(const TriMesh& mesh) {
+  if (has_deleted_vertex(mesh)) {  // rare (before garbage collection): the soup's numbering, on a copy
+    TriangleSoup soup = soup_from_mesh(mesh);
+    compacted_ = std::move(soup.points);
+    triangles_ = std::move(soup.triangles);
+    points_ = PointSpan(compacted_);
+    return;
   }
+  triangles_ = triangles_of(mesh, [](int v) { return static_cast<std::uint32_t>(v); });
+  points_ = PointSpan(mesh.points(), mesh.n_vertices());
+}
+
+TriangleSoup to_soup(const SoupView& surface) {
+  TriangleSoup soup;
+  soup.points.reserve(surface.points.size());
+  for (std::size_t v = 0; v < surface.points.size(); ++v) soup.points.push_back(surface.points[v]);
+  soup.triangles.assign(surface.triangles.begin(), surface.triangles.end());
   return soup;
 }
 

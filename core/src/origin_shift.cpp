@@ -4,11 +4,12 @@
 
 namespace meshprep {
 
-Vec3 origin_shift(const std::vector<Vec3>& points) {
+Vec3 origin_shift(const PointSpan& points) {
   Vec3 shift = Vec3::Zero();
   if (points.empty()) return shift;
-  Vec3 low = points.front(), high = points.front();
-  for (const Vec3& p : points) {
+  Vec3 low = points[0], high = points[0];
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 p = points[i];
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }

@@ -138,7 +138,7 @@ class Run {
 
   // Measures the mesh after a stage; a stage that made the surface cross itself stops the run.
   void measure(StageRecord& record) {
-    const QualityReport report = analyze_quality(soup_from_mesh(mesh_), stage_params_, &result_.input_surface);
+    const QualityReport report = analyze_quality(MeshSoupView(mesh_), stage_params_, &result_.input_surface);
     fill_shape(record, report);
     if (report.self_intersections > input_self_intersections_)
       throw PipelineFailed(result_.input + ": " + record.name + " made the surface intersect itself at " +

@@ -72,7 +72,7 @@ void for_each_overlapping_box_pair(const std::vector<Box3>& boxes, std::vector<s
 
 }  // namespace
 
-void for_each_neighbour_pair(const TriangleSoup& soup, const std::vector<char>& usable,
+void for_each_neighbour_pair(const SoupView& soup, const std::vector<char>& usable,
                              const std::function<void(std::size_t, std::size_t)>& visit) {
   // The usable faces around each vertex, vertex by vertex (compressed rows).
   const std::size_t points = soup.points.size();

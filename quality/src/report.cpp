@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::size_t kListedPairs = 100;
 
-void fill_topology(const TriangleSoup& soup, QualityReport& r) {
+void fill_topology(const SoupView& soup, QualityReport& r) {
   const Topology topo = analyze_topology(soup);
   r.vertices = topo.referenced_vertices;
   r.isolated_vertices = topo.isolated_vertices;
@@ -38,7 +38,7 @@ void fill_topology(const TriangleSoup& soup, QualityReport& r) {
   if (volume_defined) r.volume = signed_volume(soup);
 }
 
-void fill_shape(const TriangleSoup& soup, std::size_t n_worst, QualityReport& r) {
+void fill_shape(const SoupView& soup, std::size_t n_worst, QualityReport& r) {
   r.face_shapes = triangle_shapes(soup);
   const std::size_t n = r.face_shapes.size();
   std::vector<double> rr, ar, amin, amax, area;
@@ -83,7 +83,7 @@ void fill_shape(const TriangleSoup& soup, std::size_t n_worst, QualityReport& r)
   for (std::size_t i = 0; i < k; ++i) r.worst_faces.push_back({order[i], r.face_shapes[order[i]]});
 }
 
-void fill_bbox(const TriangleSoup& soup, QualityReport& r) {
+void fill_bbox(const SoupView& soup, QualityReport& r) {
   const Box3 box = bounding_box(soup);
   if (box.isEmpty()) return;
   r.bbox_min = box.min();
@@ -91,7 +91,7 @@ void fill_bbox(const TriangleSoup& soup, QualityReport& r) {
   r.bbox_diagonal = box.diagonal().norm();
 }
 
-ReferenceComparison compare_with(const TriangleSoup& soup, const QualityReport& r, const TriangleSoup& reference,
+ReferenceComparison compare_with(const SoupView& soup, const QualityReport& r, const TriangleSoup& reference,
                                  const QualityParams& params) {
   DistanceParams dp;
   dp.samples = params.distance_samples;
@@ -115,7 +115,7 @@ ReferenceComparison compare_with(const TriangleSoup& soup, const QualityReport& 
 
 }  // namespace
 
-QualityReport analyze_quality(const TriangleSoup& soup, const QualityParams& params, const TriangleSoup* reference) {
+QualityReport analyze_quality(const SoupView& soup, const QualityParams& params, const TriangleSoup* reference) {
   const auto start = std::chrono::steady_clock::now();
   QualityReport r;
   fill_topology(soup, r);

@@ -15,16 +15,16 @@
 namespace meshprep {
 namespace {
 
-bool has_area(const TriangleSoup& soup, const Triangle& t) {
+bool has_area(const SoupView& soup, const Triangle& t) {
   return triangle_has_area(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
 }
 
-std::array<Vec3, 3> corners(const TriangleSoup& soup, std::size_t f) {
+std::array<Vec3, 3> corners(const SoupView& soup, std::size_t f) {
   const Triangle& t = soup.triangles[f];
   return {soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]};
 }
 
-bool faces_intersect(const TriangleSoup& soup, const Triangle& a, const Triangle& b) {
+bool faces_intersect(const SoupView& soup, const Triangle& a, const Triangle& b) {
   const auto& P = soup.points;
   int shared = 0, ia = -1, ib = -1;
   for (int i = 0; i < 3; ++i)
@@ -65,7 +65,7 @@ bool faces_intersect(const TriangleSoup& soup, const Triangle& a, const Triangle
 
 }  // namespace
 
-SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t cap) {
+SelfIntersections find_self_intersections(const SoupView& soup, std::size_t cap) {
   const std::size_t n = soup.triangles.size();
   std::vector<char> valid(n);
   for (std::size_t f = 0; f < n; ++f) valid[f] = has_area(soup, soup.triangles[f]) ? 1 : 0;

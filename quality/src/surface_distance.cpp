@@ -14,7 +14,7 @@
 namespace meshprep {
 namespace {
 
-double triangle_area(const TriangleSoup& s, const Triangle& t) {
+double triangle_area(const SoupView& s, const Triangle& t) {
   return 0.5 * (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]).norm();
 }
 
@@ -104,9 +104,10 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
 
 // The soup without zero-area triangles (they carry no surface and would attract no samples),
 // moved by -shift.
-TriangleSoup without_degenerate(const TriangleSoup& s, const Vec3& shift) {
-  TriangleSoup out{s.points, {}};
-  for (Vec3& p : out.points) p -= shift;
+TriangleSoup without_degenerate(const SoupView& s, const Vec3& shift) {
+  TriangleSoup out;
+  out.points.reserve(s.points.size());
+  for (std::size_t v = 0; v < s.points.size(); ++v) out.points.push_back(s.points[v] - shift);
   for (const Triangle& t : s.triangles)
     if (triangle_area(s, t) > 0) out.triangles.push_back(t);
   return out;
@@ -116,7 +117,7 @@ TriangleSoup without_degenerate(const TriangleSoup& s, const Vec3& shift) {
 
 double SurfaceDistance::rms() const { return std::sqrt(0.5 * (a_to_b.rms * a_to_b.rms + b_to_a.rms * b_to_a.rms)); }
 
-SurfaceDistance surface_distance(const TriangleSoup& a, const TriangleSoup& b, const DistanceParams& params) {
+SurfaceDistance surface_distance(const SoupView& a, const SoupView& b, const DistanceParams& params) {
   // Far from the origin, point-triangle distances are measured next to it (origin_shift.h).
   const Vec3 shift = origin_shift(a.points);
   const TriangleSoup sa = without_degenerate(a, shift), sb = without_degenerate(b, shift);
@@ -129,7 +130,7 @@ SurfaceDistance surface_distance(const TriangleSoup& a, const TriangleSoup& b, c
   return result;
 }
 
-double bbox_diagonal(const TriangleSoup& soup) {
+double bbox_diagonal(const SoupView& soup) {
   const Box3 box = bounding_box(soup);
   return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }

@@ -23,7 +23,7 @@ struct FaceEdge {
   bool forward;  // traversed from the smaller to the larger vertex index
 };
 
-std::vector<FaceEdge> sorted_face_edges(const TriangleSoup& soup) {
+std::vector<FaceEdge> sorted_face_edges(const SoupView& soup) {
   std::vector<FaceEdge> edges;
   edges.reserve(3 * soup.triangles.size());
   for (std::uint32_t f = 0; f < soup.triangles.size(); ++f) {
@@ -40,12 +40,12 @@ std::vector<FaceEdge> sorted_face_edges(const TriangleSoup& soup) {
 }
 
 // Corner id of vertex v in face f: 3 f + local index.
-std::uint32_t corner(const TriangleSoup& soup, std::uint32_t f, std::uint32_t v) {
+std::uint32_t corner(const SoupView& soup, std::uint32_t f, std::uint32_t v) {
   const Triangle& t = soup.triangles[f];
   return 3 * f + (t[0] == v ? 0 : t[1] == v ? 1 : 2);
 }
 
-void count_duplicates(const TriangleSoup& soup, Topology& topo) {
+void count_duplicates(const SoupView& soup, Topology& topo) {
   struct Hash {
     std::size_t operator()(const Triangle& t) const {
       return (std::size_t{t[0]} * 73856093u) ^ (std::size_t{t[1]} * 19349663u) ^ (std::size_t{t[2]} * 83492791u);
@@ -65,7 +65,7 @@ void count_duplicates(const TriangleSoup& soup, Topology& topo) {
 
 }  // namespace
 
-Topology analyze_topology(const TriangleSoup& soup) {
+Topology analyze_topology(const SoupView& soup) {
   Topology topo;
   const std::size_t n_faces = soup.triangles.size(), n_points = soup.points.size();
   std::vector<char> used(n_points, 0);

@@ -48,7 +48,7 @@ bool triangles_share_a_corner(const Triangle& a, const Triangle& b) {
 
 }  // namespace
 
-Box3 bounding_box(const TriangleSoup& soup) {
+Box3 bounding_box(const SoupView& soup) {
   Box3 box;
   box.setEmpty();
   for (const Triangle& t : soup.triangles)
@@ -91,7 +91,7 @@ Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return a + std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) * ab;
 }
 
-TriangleBvh::TriangleBvh(const TriangleSoup& soup) : soup_(soup) {
+TriangleBvh::TriangleBvh(const SoupView& soup) : soup_(soup) {
   const auto n = static_cast<std::uint32_t>(soup.triangles.size());
   boxes_.resize(n);
   std::vector<Vec3> centroids(n);

@@ -37,7 +37,7 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   return s;
 }
 
-double signed_volume(const TriangleSoup& soup) {
+double signed_volume(const SoupView& soup) {
   if (soup.triangles.empty()) return 0;
   // Cones from a corner of the surface, not from the origin: far from the origin (a survey at
   // 1e9 m) the products of absolute coordinates cancel to nothing.
@@ -50,7 +50,7 @@ double signed_volume(const TriangleSoup& soup) {
   return six_volume / 6.0;
 }
 
-std::vector<TriangleShape> triangle_shapes(const TriangleSoup& soup) {
+std::vector<TriangleShape> triangle_shapes(const SoupView& soup) {
   std::vector<TriangleShape> shapes(soup.triangles.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, shapes.size(), 4096), [&](const auto& range) {
     for (std::size_t f = range.begin(); f != range.end(); ++f) {

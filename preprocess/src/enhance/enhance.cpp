@@ -8,6 +8,7 @@
 #include "enhance/surface_relocation.h"
 #include "enhance/topology_cleanup.h"
 
+#include "meshprep/core/soup_view.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
@@ -141,7 +142,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
       const std::size_t removed = detail::collapse_for_angles(mesh, constraints, rules, removal_budget - removed_vertices);
       const std::size_t split_budget = (face_budget + 2 * (removed_vertices + removed)) / 2 - split_edges;
       const std::size_t splits = detail::split_for_angles(mesh, constraints, rules, split_budget);
-      if (flips + removed + splits > 0 && find_self_intersections(soup_from_mesh(mesh)).count > allowed_intersections) {
+      if (flips + removed + splits > 0 && find_self_intersections(MeshSoupView(mesh)).count > allowed_intersections) {
         mesh = before_cleanup;
       } else {
         flips_made += flips;

@@ -41,9 +41,9 @@ bool touches(const TriMesh& mesh, std::size_t face, const std::vector<char>& dir
 
 }  // namespace
 
-std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const TriangleSoup& reference) {
-  const TriangleSoup soup = soup_from_mesh(mesh);
-  const TriangleBvh bvh(soup);
+std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const SoupView& reference) {
+  const MeshSoupView surface(mesh);
+  const TriangleBvh bvh(surface);
   std::vector<TriangleBvh::Hit> hits(reference.points.size());
   tbb::parallel_for(std::size_t(0), hits.size(), [&](std::size_t i) { hits[i] = bvh.closest_point(reference.points[i]); });
   return hits;
@@ -56,7 +56,7 @@ MoveGuards::MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraint
       allowed_intersections_(allowed_intersections),
       max_deviation_(max_deviation),
       before_(mesh.points(), mesh.points() + mesh.n_vertices()),
-      coverage_before_(reference_coverage(mesh, constraints.reference_bvh().soup())) {}
+      coverage_before_(reference_coverage(mesh, constraints.reference_bvh().surface())) {}
 
 bool MoveGuards::moved(const TriMesh& mesh, TriMesh::VertexHandle v) const {
   return mesh.point(v) != before_[static_cast<std::size_t>(v.idx())];
@@ -151,9 +151,9 @@ std::size_t MoveGuards::undo_uncovering(TriMesh& mesh, const std::vector<char>& 
   for (std::size_t i = 0; i < nearest_face.size(); ++i)
     if (touches(mesh, nearest_face[i], dirty)) suspects.push_back(i);
   if (suspects.empty()) return 0;
-  const TriangleSoup soup = soup_from_mesh(mesh);
-  const TriangleBvh bvh(soup);
-  const auto& points = constraints_.reference_bvh().soup().points;
+  const MeshSoupView surface(mesh);
+  const TriangleBvh bvh(surface);
+  const auto& points = constraints_.reference_bvh().surface().points;
   std::vector<TriangleBvh::Hit> coverage(suspects.size());
   tbb::parallel_for(std::size_t(0), suspects.size(), [&](std::size_t k) { coverage[k] = bvh.closest_point(points[suspects[k]]); });
   std::size_t undone = 0;

@@ -4,6 +4,7 @@
 #include "enhance/surface_constraints.h"
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 #include "meshprep/quality/triangle_bvh.h"
 
 #include <cstddef>
@@ -12,7 +13,7 @@
 namespace meshprep::detail {
 
 /// Distance of every point of `reference` to the mesh, and the face where it is reached.
-std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const TriangleSoup& reference);
+std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const SoupView& reference);
 
 /// Takes back, vertex by vertex (to where the round found it), every move that:
 /// - turns a face by more than 60 degrees (or folds it over);

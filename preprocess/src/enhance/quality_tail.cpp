@@ -1,5 +1,6 @@
 #include "enhance/quality_tail.h"
 
+#include "meshprep/core/soup_view.h"
 #include "meshprep/quality/triangle_metrics.h"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ struct FaceQuality {
 // degenerate face. The shapes come from the quality module (parallel over faces).
 FaceQuality face_quality(const TriMesh& mesh) {
   FaceQuality quality;
-  for (const TriangleShape& shape : triangle_shapes(soup_from_mesh(mesh))) {
+  for (const TriangleShape& shape : triangle_shapes(MeshSoupView(mesh))) {
     quality.q.push_back(shape.degenerate ? 0.0 : 1.0 / shape.radius_ratio);
     quality.min_angle_deg.push_back(shape.degenerate ? 0.0 : shape.min_angle_deg);
   }

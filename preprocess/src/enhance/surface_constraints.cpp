@@ -148,8 +148,8 @@ SurfaceConstraints::~SurfaceConstraints() {
 }
 
 Vec3 SurfaceConstraints::reference_normal(std::size_t face) const {
-  const auto& t = bvh_.soup().triangles[face];
-  const auto& p = bvh_.soup().points;
+  const auto& t = bvh_.surface().triangles[face];
+  const auto& p = bvh_.surface().points;
   const Vec3 n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
   return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
 }

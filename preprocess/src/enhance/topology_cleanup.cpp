@@ -44,7 +44,7 @@ bool keeps_reference_covered(const SurfaceConstraints& constraints, const std::v
     for (const Vec3& q : c) box.extend(q);
   box.min().array() -= limit;
   box.max().array() += limit;
-  const TriangleSoup& reference = constraints.reference_bvh().soup();
+  const SoupView& reference = constraints.reference_bvh().surface();
   bool covered = true;
   constraints.reference_bvh().for_each_overlapping(box, [&](std::size_t face) {
     for (const std::uint32_t corner : reference.triangles[face]) {

@@ -25,8 +25,8 @@ Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v))
 // Whether the surface at the hit faces the way the vertex does: not the other sheet of a thin
 // part (a plate 0.002 thick simplified to 10 %: its vertices went through to the other side).
 bool same_side(const TriangleBvh& reference, const TriangleBvh::Hit& hit, const Vec3& normal) {
-  const Triangle& t = reference.soup().triangles[hit.face];
-  const std::vector<Vec3>& p = reference.soup().points;
+  const Triangle& t = reference.surface().triangles[hit.face];
+  const PointSpan& p = reference.surface().points;
   return area_normal(p[t[0]], p[t[1]], p[t[2]]).dot(normal) > 0;
 }
 

@@ -4,6 +4,7 @@
 #include "smooth/laplacian_smoothing.h"
 #include "smooth/rbf_smoothing.h"
 
+#include "meshprep/core/soup_view.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
@@ -23,7 +24,7 @@ bool closed(const TriMesh& mesh) {
   return mesh.n_faces() > 0;
 }
 
-double volume(const TriMesh& mesh) { return signed_volume(soup_from_mesh(mesh)); }
+double volume(const TriMesh& mesh) { return signed_volume(MeshSoupView(mesh)); }
 
 // --preserve-volume: the enclosed volume V(t) of the surface offset by t along its (area-weighted)
 // vertex normals grows by about t x area; Newton steps on t bring it back to the input's volume

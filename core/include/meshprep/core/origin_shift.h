@@ -6,6 +6,7 @@
 /// 0 (tests/cli_corpus_test.sh). The stages therefore run on the surface moved next to the origin.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include <vector>
 
@@ -15,7 +16,7 @@ namespace meshprep {
 /// their bounding box where that centre is farther from 0 than the box is wide, else 0 (points near
 /// the origin are left alone). Subtracting it is exact (every coordinate is within a factor 2 of the
 /// centre, Sterbenz's lemma), and adding it back restores each coordinate bit for bit.
-Vec3 origin_shift(const std::vector<Vec3>& points);
+Vec3 origin_shift(const PointSpan& points);
 
 /// Moves a mesh by minus its origin_shift for as long as it lives, and back when destroyed (also
 /// when an exception leaves the scope). Vertices that did not move in between come back exactly.

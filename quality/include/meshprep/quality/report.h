@@ -5,6 +5,7 @@
 /// writers in report_writers.h; the JSON keys are the field names below.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 #include "meshprep/quality/statistics.h"
 #include "meshprep/quality/triangle_metrics.h"
 
@@ -86,8 +87,9 @@ struct QualityReport {
   double time_seconds = 0;  ///< time spent in analyze_quality
 };
 
-/// Measure a surface. If `reference` is given, also the symmetric distances to it.
-QualityReport analyze_quality(const TriangleSoup& soup, const QualityParams& params = {},
+/// Measure a surface (a TriangleSoup, or a TriMesh through MeshSoupView). If `reference` is given,
+/// also the symmetric distances to it.
+QualityReport analyze_quality(const SoupView& soup, const QualityParams& params = {},
                               const TriangleSoup* reference = nullptr);
 
 }  // namespace meshprep

@@ -7,6 +7,7 @@
 /// (duplicates) count as intersecting.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include <utility>
 #include <vector>
@@ -25,7 +26,8 @@ struct SelfIntersections {
 /// Find intersecting face pairs: faces with corners in common by the directions they cover around
 /// each vertex, the others with a BVH and a certified floating-point plane test; then the exact
 /// test (triangle_intersection.h). Degenerate faces (zero area) are skipped: they are reported as
-/// degenerate, not as intersections. Stops after `cap` pairs (0 = no limit).
-SelfIntersections find_self_intersections(const TriangleSoup& soup, std::size_t cap = 0);
+/// degenerate, not as intersections. Stops after `cap` pairs (0 = no limit). `soup` is a TriangleSoup,
+/// or a TriMesh through MeshSoupView (no copy of its points).
+SelfIntersections find_self_intersections(const SoupView& soup, std::size_t cap = 0);
 
 }  // namespace meshprep

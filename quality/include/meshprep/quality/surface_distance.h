@@ -6,6 +6,7 @@
 /// the worst random samples (so the sampled Hausdorff distance approaches the true one).
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 namespace meshprep {
 
@@ -33,9 +34,9 @@ struct SurfaceDistance {
 
 /// Symmetric distance between surfaces a and b (deterministic for a seed, whatever the threads).
 /// \throws InvalidInput if either surface has no triangle of positive area.
-SurfaceDistance surface_distance(const TriangleSoup& a, const TriangleSoup& b, const DistanceParams& params = {});
+SurfaceDistance surface_distance(const SoupView& a, const SoupView& b, const DistanceParams& params = {});
 
 /// Bounding-box diagonal of the referenced vertices of a soup.
-double bbox_diagonal(const TriangleSoup& soup);
+double bbox_diagonal(const SoupView& soup);
 
 }  // namespace meshprep

@@ -4,6 +4,7 @@
 /// (a halfedge structure cannot hold the non-manifold cases we must report).
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include <optional>
 #include <vector>
@@ -37,6 +38,6 @@ struct Topology {
 };
 
 /// Analyse the connectivity of `soup`.
-Topology analyze_topology(const TriangleSoup& soup);
+Topology analyze_topology(const SoupView& soup);
 
 }  // namespace meshprep

@@ -4,6 +4,7 @@
 /// for closest-point queries and overlap searches.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include <Eigen/Geometry>
 
@@ -17,7 +18,7 @@ namespace meshprep {
 using Box3 = Eigen::AlignedBox3d;
 
 /// Bounding box of the vertices the faces of `soup` use (empty box if there is no face).
-Box3 bounding_box(const TriangleSoup& soup);
+Box3 bounding_box(const SoupView& soup);
 
 /// Closest point on triangle (a, b, c) to p (exact, Ericson's region classification).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
@@ -27,8 +28,11 @@ Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
 
 class TriangleBvh {
  public:
-  /// Builds the hierarchy over every triangle of `soup` (the soup must outlive the BVH).
-  explicit TriangleBvh(const TriangleSoup& soup);
+  /// Builds the hierarchy over every triangle of `soup` (a view: what it sees, a TriangleSoup or a
+  /// MeshSoupView, must outlive the BVH and keep its points where they were when it was built).
+  explicit TriangleBvh(const SoupView& soup);
+  TriangleBvh(TriangleSoup&&) = delete;  // a temporary would not outlive it
+  TriangleBvh(MeshSoupView&&) = delete;
 
   struct Hit {
     std::size_t face = 0;
@@ -55,7 +59,8 @@ class TriangleBvh {
   /// thread-safe, and the order of the calls is unspecified.
   void for_each_overlapping_pair_apart(const std::function<void(std::size_t, std::size_t)>& visit) const;
 
-  const TriangleSoup& soup() const { return soup_; }
+  /// The surface the hierarchy was built over.
+  const SoupView& surface() const { return soup_; }
 
  private:
   struct Node {
@@ -71,7 +76,7 @@ class TriangleBvh {
   void overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
                          const std::function<void(std::size_t, std::size_t)>& visit) const;
 
-  const TriangleSoup& soup_;
+  SoupView soup_;
   std::vector<Box3> boxes_;           ///< per triangle
   std::vector<std::uint32_t> order_;  ///< triangle indices, grouped by leaf
   std::vector<Node> nodes_;           ///< nodes_[0] is the root

@@ -11,6 +11,7 @@
 /// - area.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include <limits>
 #include <vector>
@@ -43,12 +44,13 @@ inline double radius_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
   return radius_ratio_of((b - a).norm(), (c - b).norm(), (a - c).norm(), area);
 }
 
-/// Signed volume enclosed by the soup's faces, sum of (p0 - o) . ((p1 - o) x (p2 - o)) / 6 with o a
+/// Signed volume enclosed by the surface's faces, sum of (p0 - o) . ((p1 - o) x (p2 - o)) / 6 with o a
 /// corner of the first face (divergence theorem; o near the surface keeps the figure exact far
 /// from the origin); meaningful for a closed, consistently oriented surface (positive for outward normals).
-double signed_volume(const TriangleSoup& soup);
+double signed_volume(const SoupView& soup);
 
-/// Shape of every triangle of a soup, in face order (parallel over faces).
-std::vector<TriangleShape> triangle_shapes(const TriangleSoup& soup);
+/// Shape of every triangle of a surface (a TriangleSoup, or a TriMesh through MeshSoupView), in face
+/// order (parallel over faces).
+std::vector<TriangleShape> triangle_shapes(const SoupView& soup);
 
 }  // namespace meshprep
