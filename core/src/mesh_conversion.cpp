@@ -89,14 +89,6 @@ MeshSoupView::MeshSoupView(const TriMesh& mesh) {
   points_ = PointSpan(mesh.points(), mesh.n_vertices());
 }
 
-TriangleSoup to_soup(const SoupView& surface) {
-  TriangleSoup soup;
-  soup.points.reserve(surface.points.size());
-  for (std::size_t v = 0; v < surface.points.size(); ++v) soup.points.push_back(surface.points[v]);
-  soup.triangles.assign(surface.triangles.begin(), surface.triangles.end());
-  return soup;
-}
-
 TriMesh mesh_from_soup(const TriangleSoup& soup, MeshBuildReport* report) {
   TriMesh mesh;
   mesh.reserve(soup.points.size(), soup.triangles.size() * 3 / 2, soup.triangles.size());

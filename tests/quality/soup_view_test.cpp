@@ -20,6 +20,14 @@ TriMesh crossing_spheres() {
   return mesh_from_soup(merged(icosphere(2), translated(icosphere(2, 0.8), Vec3(1.1, 0.2, 0.1))));
 }
 
+// What a view sees, copied into a soup of its own.
+TriangleSoup to_soup(const SoupView& surface) {
+  TriangleSoup soup;
+  for (std::size_t v = 0; v < surface.points.size(); ++v) soup.points.push_back(surface.points[v]);
+  soup.triangles.assign(surface.triangles.begin(), surface.triangles.end());
+  return soup;
+}
+
 void expect_same_soup(const TriangleSoup& a, const TriangleSoup& b) {
   ASSERT_EQ(a.points.size(), b.points.size());
   for (std::size_t v = 0; v < a.points.size(); ++v) EXPECT_EQ(a.points[v], b.points[v]) << "vertex " << v;

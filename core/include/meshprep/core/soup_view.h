@@ -65,9 +65,6 @@ struct SoupView {
   SoupView(const TriangleSoup& soup) : points(soup.points), triangles(soup.triangles) {}  // NOLINT: implicit
 };
 
-/// Copies what a view sees into a soup of its own.
-TriangleSoup to_soup(const SoupView& surface);
-
 /// A halfedge mesh seen as the soup soup_from_mesh(mesh) would make: the same faces in the same
 /// order (deleted ones skipped), the same corners, the same vertex numbering. Unlike the soup it
 /// borrows the mesh's points (TriMesh::points(), one contiguous array) when no vertex is deleted;
