@@ -1,9 +1,11 @@
 #include "cli_common.h"
+#include "cli_parameters.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/solver_targets.h"
-#include "meshprep/report/number_format.h"
+#include "meshprep/quality/quality_parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -97,9 +99,7 @@ void refuse_non_finite_numbers(CLI::App& app) {
 }
 
 void add_samples_option(CLI::App& cmd, std::size_t& samples) {
-  cmd.add_option("--samples", samples, "Random samples per direction for the reference distances of the report")
-      ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1000}, std::size_t{100000000}));
+  add_parameter(cmd, quality_parameters().distance_samples, samples);
 }
 
 void add_threads_option(CLI::App& cmd, std::size_t& threads) {
@@ -116,19 +116,10 @@ TetThresholds ThresholdFlags::applied_to(TetThresholds thresholds) const {
 
 void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags) {
   const TetThresholds defaults;
-  const auto text = [](double v) { return format_number(v, 6); };
-  cmd.add_option("--min-dihedral-threshold", flags.min_dihedral_deg,
-                 "FEM-ready only if the smallest dihedral angle is at least DEG (default " +
-                     text(defaults.min_dihedral_deg) + "; else exit 1, files written)")
-      ->check(CLI::Range(0.0, 180.0));
-  cmd.add_option("--max-dihedral-threshold", flags.max_dihedral_deg,
-                 "FEM-ready only if the largest dihedral angle is at most DEG (default " +
-                     text(defaults.max_dihedral_deg) + ")")
-      ->check(CLI::Range(0.0, 180.0));
-  cmd.add_option("--max-inverted-tets", flags.max_inverted_tets,
-                 "FEM-ready only if at most N tets are inverted or flat (default " +
-                     std::to_string(defaults.max_inverted_tets) + ")")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1000000000}));
+  const VerdictParameters& p = verdict_parameters();
+  add_override(cmd, p.min_dihedral_deg, flags.min_dihedral_deg, defaults.min_dihedral_deg);
+  add_override(cmd, p.max_dihedral_deg, flags.max_dihedral_deg, defaults.max_dihedral_deg);
+  add_override(cmd, p.max_inverted_tets, flags.max_inverted_tets, defaults.max_inverted_tets);
 }
 
 TetExportOptions tet_export_options(const std::string& output, const std::string& target, const std::string& msh_version,
@@ -154,18 +145,12 @@ ImproveParams ImproveFlags::applied_to(ImproveParams params) const {
 
 void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off) {
   const ImproveParams defaults;
-  const auto text = [](double v) { return format_number(v, 6); };
+  const ImproveParameters& p = improve_parameters();
   if (can_switch_off)
     cmd.add_flag("--no-improve", flags.off, "Keep TetGen's tets as they are (no flips, smoothing or new inner vertices)");
-  cmd.add_option("--goal-min-dihedral", flags.goal_min_dihedral_deg,
-                 "Improve the tets with a dihedral angle under DEG (default " + text(defaults.goal_min_dihedral_deg) + ")")
-      ->check(CLI::Range(1.0, 59.0));
-  cmd.add_option("--goal-max-dihedral", flags.goal_max_dihedral_deg,
-                 "... and those with one over DEG (default " + text(defaults.goal_max_dihedral_deg) + ")")
-      ->check(CLI::Range(61.0, 179.0));
-  cmd.add_option("--improve-time-limit", flags.time_limit_seconds,
-                 "Stop improving after SECONDS, keeping the tets so far (default: no limit)")
-      ->check(CLI::NonNegativeNumber);
+  add_override(cmd, p.goal_min_dihedral_deg, flags.goal_min_dihedral_deg, defaults.goal_min_dihedral_deg);
+  add_override(cmd, p.goal_max_dihedral_deg, flags.goal_max_dihedral_deg, defaults.goal_max_dihedral_deg);
+  add_override(cmd, p.time_limit_seconds, flags.time_limit_seconds, defaults.time_limit_seconds);
 }
 
 void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks,

@@ -1,6 +1,7 @@
 // meshprep enhance IN -o OUT [--reference ORIGINAL] [--iterations K] [--max-deviation E]
 //   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--threads N] [--json FILE|-]
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 #include "stage_failure.h"
@@ -8,6 +9,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/enhance/enhance_parameters.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/report/report_writers.h"
 
@@ -19,7 +21,6 @@ namespace {
 
 struct EnhanceOptions {
   std::string input, output, reference, json;
-  std::string max_deviation = "auto";
   EnhanceParams params;
   std::size_t samples = QualityParams().distance_samples;
   std::size_t threads = 0;
@@ -35,7 +36,6 @@ int run_enhance(EnhanceOptions o) {
     reference = std::make_unique<TriangleSoup>(read_soup(o.reference));
     if (reference->triangles.empty()) throw InvalidInput(o.reference + ": the reference has no faces");
   }
-  if (o.max_deviation != "auto") o.params.max_deviation = std::stod(o.max_deviation);
   ProgressBar bar("enhance");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const EnhanceResult result = run_stage_on(o.input, [&] { return enhance(loaded.mesh, reference.get(), o.params); });
@@ -81,35 +81,12 @@ Action add_enhance_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Enhanced surface (.off .obj .ply .stl)")->required();
   cmd->add_option("--reference", o->reference,
                   "The original surface to stay on (e.g. the mesh before simplification); default: the input");
-  cmd->add_option("--iterations", o->params.iterations, "Rounds at most (statistic, flips, Ceres solve, projection)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
-      ->capture_default_str();
-  cmd->add_option("--max-deviation", o->max_deviation,
-                  "A face may not move farther than this fraction of the bounding-box diagonal from the reference "
-                  "(unless it already was); auto: as far as the input already is from the reference (the "
-                  "enhancement is no less faithful than its input), at most 0.002, and 0.002 when it lies on it")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            if (value == "auto") return std::string();
-            try {
-              const double e = std::stod(value);
-              return e > 0 && e <= 1 ? std::string() : "must be in (0, 1] (or auto)";
-            } catch (const std::exception&) {
-              return "expected a number in (0, 1] or auto, not '" + value + "'";
-            }
-          },
-          "E|auto"))
-      ->capture_default_str();
-  cmd->add_option("--target-min-angle", o->params.target_min_angle_deg,
-                  "Faces with a smaller angle (degrees) are always in the statistic's bad tail")
-      ->check(CLI::Range(1.0, 59.0))
-      ->capture_default_str();
-  cmd->add_option("--feature-angle", o->params.feature_angle_deg,
-                  "Edges with a larger dihedral angle (degrees) are creases: their vertices slide only along them; "
-                  "180 = none")
-      ->check(CLI::Range(1.0, 180.0))
-      ->capture_default_str();
-  cmd->add_flag("--flips,!--no-flips", o->params.flips, "Flip edges where moving vertices cannot help (default on)");
+  const EnhanceParameters& p = enhance_parameters();
+  add_parameter(*cmd, p.iterations, o->params.iterations);
+  add_auto_parameter(*cmd, p.max_deviation, o->params.max_deviation);
+  add_parameter(*cmd, p.target_min_angle_deg, o->params.target_min_angle_deg);
+  add_parameter(*cmd, p.feature_angle_deg, o->params.feature_angle_deg);
+  add_parameter(*cmd, p.flips, o->params.flips);
   add_samples_option(*cmd, o->samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");

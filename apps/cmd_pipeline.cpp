@@ -4,11 +4,13 @@
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/pipeline/pipeline.h"
+#include "meshprep/preprocess/simplify/simplify_parameters.h"
 #include "meshprep/pipeline/pipeline_config.h"
 #include "meshprep/pipeline/pipeline_outputs.h"
 #include "meshprep/quality/quality_gate.h"
@@ -42,9 +44,9 @@ PipelineConfig effective_config(const PipelineOptions& o) {
   if (!o.config.empty()) read_config_file(o.config, config);
   if (o.ratio > 0) {
     config.simplify.ratio = o.ratio;
-    config.simplify.target_faces = 0;
+    config.simplify.params.target_faces = 0;
   }
-  if (o.target_faces > 0) config.simplify.target_faces = o.target_faces;
+  if (o.target_faces > 0) config.simplify.params.target_faces = o.target_faces;
   if (o.extrude_base > 0) config.tetrahedralize.extrude_base = o.extrude_base;
   if (!o.format.empty()) config.tetrahedralize.format = o.format;
   if (!o.msh_version.empty())
@@ -204,8 +206,9 @@ Action add_pipeline_command(CLI::App& app) {
   cmd->add_option("--config", o->config,
                   "Configuration file (JSON, keys in docs/pipeline.md; a pipeline.json replays its run)")
       ->check(CLI::ExistingFile);
-  auto* ratio = cmd->add_option("--ratio", o->ratio, "Simplify: fraction of the faces kept, in (0, 1]")
-                    ->check(CLI::Range(1e-9, 1.0));
+  const ParameterInfo& keep_ratio = simplify_parameters().keep_ratio;
+  auto* ratio =
+      cmd->add_option(keep_ratio.flag, o->ratio, "Simplify: " + keep_ratio.help)->check(range_check(keep_ratio.range));
   cmd->add_option("--target-faces", o->target_faces, "Simplify: target number of faces")
       ->check(CLI::PositiveNumber)
       ->excludes(ratio);

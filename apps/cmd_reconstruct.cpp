@@ -2,6 +2,7 @@
 //   [--leaf-size K] [--neighbors N] [--variation-threshold T|pNN] [--variation-growth G]
 //   [--adaptive] [--max-gap G] [--threads N] [--json FILE|-]
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 #include "stage_failure.h"
@@ -10,6 +11,7 @@
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/compose/adaptive_reconstruction.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/reconstruct/reconstruct_parameters.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
 #include "meshprep/quality/json_values.h"
 
@@ -23,12 +25,10 @@ namespace {
 
 struct ReconstructOptions {
   std::string input, output, json;
-  std::vector<std::size_t> resolution{300, 300};
-  double spacing = 0, max_gap = 0, variation_growth = 1.5;
-  bool adaptive = false, fill_holes = false;
-  std::size_t leaf_size = 16, neighbors = 40, vertices = 0;
+  ReconstructParams params;
+  std::vector<std::size_t> resolution{params.columns, params.rows};
+  bool adaptive = false;
   std::size_t threads = 0;
-  std::string variation_threshold = "p90";
 };
 
 std::string check_variation_rule(const std::string& text) {
@@ -40,17 +40,9 @@ int run_reconstruct(const ReconstructOptions& o) {
   const ThreadLimit parallelism(o.threads);
   ensure_distinct_files({o.input}, {o.output, o.json});
   const PointSet input = read_points(o.input);
-  ReconstructParams params;
+  ReconstructParams params = o.params;
   params.columns = o.resolution[0];
   params.rows = o.resolution[1];
-  params.spacing = o.spacing;
-  params.vertices = o.vertices;
-  params.fill_holes = o.fill_holes;
-  params.max_gap = o.max_gap;
-  params.fit.leaf_size = o.leaf_size;
-  params.fit.neighbors = o.neighbors;
-  params.fit.variation_growth = o.variation_growth;
-  apply_variation_rule(o.variation_threshold, params.fit);  // checked by CLI11
   ProgressBar bar("reconstruct");
   const AdaptiveReconstructParams adaptive{params, stoppable([&bar](double fraction) { bar.update(fraction); })};
   const auto start = std::chrono::steady_clock::now();
@@ -75,17 +67,17 @@ int run_reconstruct(const ReconstructOptions& o) {
   json["grid"] = {{"columns", result.columns}, {"rows", result.rows}};
   json["adaptive"] = o.adaptive;
   json["patches"] = result.patches;
-  json["leaf_size"] = o.leaf_size;
-  json["neighbors"] = o.neighbors;
-  json["variation"] = {{"rule", o.variation_threshold},
+  json["leaf_size"] = params.fit.leaf_size;
+  json["neighbors"] = params.fit.neighbors;
+  json["variation"] = {{"rule", variation_rule_text(params.fit)},
                        {"threshold", result.variation_threshold},
-                       {"growth", o.variation_growth},
+                       {"growth", params.fit.variation_growth},
                        {"grown_patches", result.grown_patches},
                        {"patch_sigma", json_distribution(summarize(result.patch_variation))},
                        {"vertex_sigma", json_distribution(summarize(result.vertex_variation))}};
   json["max_gap"] = result.max_gap;
   json["gap_faces_left_out"] = result.gap_triangles;
-  json["fill_holes"] = o.fill_holes;
+  json["fill_holes"] = params.fill_holes;
   json["filled_faces"] = result.filled_triangles;
   json["reference_normal"] = {result.normal.x(), result.normal.y(), result.normal.z()};
   json["time_seconds"] = seconds;
@@ -94,7 +86,7 @@ int run_reconstruct(const ReconstructOptions& o) {
     std::cout << o.input << " -> " << o.output << ": " << input.points.size() << " points, "
               << result.mesh.points.size() << " vertices, " << result.mesh.triangles.size() << " faces ("
               << result.gap_triangles << " left out over gaps wider than " << result.max_gap;
-    if (o.fill_holes) std::cout << "; " << result.filled_triangles << " kept over holes in the data, flagged";
+    if (params.fill_holes) std::cout << "; " << result.filled_triangles << " kept over holes in the data, flagged";
     std::cout << ") in " << seconds << " s\n";
   }
   return kSuccess;
@@ -108,43 +100,25 @@ Action add_reconstruct_command(CLI::App& app) {
       "reconstruct", "Scattered points (a height field over a disc-like domain) -> triangle mesh, by an RBF partition of unity");
   cmd->add_option("input", o->input, "Point set (.xyz)")->required();
   cmd->add_option("-o,--output", o->output, "Surface mesh (.off .obj .ply .stl; .ply also stores sigma per vertex)")->required();
-  auto* resolution = cmd->add_option("--resolution", o->resolution, "Grid vertices along the footprint: NX NY")
+  const ReconstructParameters& p = reconstruct_parameters();
+  auto* resolution = cmd->add_option(p.resolution.flag, o->resolution, capitalised(p.resolution.help))
                          ->expected(2)
-                         ->check(CLI::Range(std::size_t(2), std::size_t(100000)))
+                         ->check(range_check(p.resolution.range))
                          ->capture_default_str();
-  auto* spacing = cmd->add_option("--spacing", o->spacing, "Grid spacing in the reference plane (instead of --resolution)")
-                      ->check(CLI::PositiveNumber)
-                      ->excludes(resolution);
-  cmd->add_option("--vertices", o->vertices, "About this many grid vertices, on square cells (instead of --resolution)")
-      ->check(CLI::Range(std::size_t(4), std::size_t(100000000)))
-      ->excludes(resolution)
-      ->excludes(spacing);
-  cmd->add_option("--leaf-size", o->leaf_size, "K: samples per k-d tree cell (one local patch each)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
-      ->capture_default_str();
-  cmd->add_option("--neighbors", o->neighbors, "Samples interpolated by each cell's patch (a Duchon r^2.5 spline)")
-      ->check(CLI::Range(std::size_t(3), std::size_t(1000)))
-      ->capture_default_str();
-  cmd->add_option("--variation-threshold", o->variation_threshold,
-                  "Patches whose surface variation sigma exceeds this grow (more samples, larger support): a "
-                  "value (the paper's 0.3) or a percentile of the patches' sigma (p90)")
+  auto* spacing = add_parameter(*cmd, p.spacing, o->params.spacing)->excludes(resolution);
+  add_parameter(*cmd, p.vertices, o->params.vertices)->excludes(resolution)->excludes(spacing);
+  add_parameter(*cmd, p.leaf_size, o->params.fit.leaf_size);
+  add_parameter(*cmd, p.neighbors, o->params.fit.neighbors);
+  cmd->add_option_function<std::string>(
+         p.variation_threshold.flag,
+         [o](const std::string& text) { apply_variation_rule(text, o->params.fit); },  // checked below
+         capitalised(p.variation_threshold.help))
       ->check(CLI::Validator(check_variation_rule, "T|pNN"))
-      ->capture_default_str();
-  cmd->add_option("--variation-growth", o->variation_growth,
-                  "Support radius factor of a grown patch (its samples grow by the square)")
-      ->check(CLI::Range(1.0, 4.0))
-      ->capture_default_str();
-  cmd->add_flag("--adaptive", o->adaptive,
-                 "Vertices dense where the surface bends, sparse where flat, for about the same face count "
-                 "(the twice finer grid simplified back by bending energy; slower)");
-  cmd->add_option("--max-gap", o->max_gap,
-                  "Leave out triangles farther than this from every sample (0 = 3x the median sample spacing)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_flag("--fill-holes", o->fill_holes,
-                "Keep the triangles over gaps inside the footprint (flagged in the JSON) and only the largest "
-                "piece, so the surface has one boundary loop and tetrahedralize --extrude-base can close it "
-                "into a block (the pipeline does this for points)");
+      ->default_str(variation_rule_text(o->params.fit));
+  add_parameter(*cmd, p.variation_growth, o->params.fit.variation_growth);
+  add_parameter(*cmd, p.adaptive, o->adaptive);
+  add_parameter(*cmd, p.max_gap, o->params.max_gap);
+  add_parameter(*cmd, p.fill_holes, o->params.fill_holes);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results as JSON (- for standard output)");
   return [o] { return run_reconstruct(*o); };

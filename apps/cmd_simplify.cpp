@@ -1,6 +1,7 @@
 // meshprep simplify IN -o OUT (--ratio R | --faces N) [--cost bending|distance|quadric]
 //   [--max-error E] [--min-angle DEG] [--no-polish] [--enhance] [--threads N] [--json FILE|-]
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 #include "stage_failure.h"
@@ -9,27 +10,25 @@
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/compose/simplify_and_enhance.h"
 #include "meshprep/preprocess/simplify/simplify.h"
+#include "meshprep/preprocess/simplify/simplify_parameters.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/topology.h"
 #include "meshprep/report/report_writers.h"
 
 #include <iostream>
-#include <map>
 #include <memory>
 
 namespace meshprep::cli {
 namespace {
 
-const std::map<std::string, CollapseCost> kCosts = {
-    {"bending", CollapseCost::Bending}, {"distance", CollapseCost::Distance}, {"quadric", CollapseCost::Quadric}};
-
 struct SimplifyOptions {
-  std::string input, output, json, cost = "bending";
-  double ratio = 0, max_error = 0, min_angle = 20;
-  std::size_t faces = 0, samples = QualityParams().distance_samples;
+  std::string input, output, json;
+  SimplifyParams params;
+  double ratio = 0;  ///< 0: --faces
+  std::size_t samples = QualityParams().distance_samples;
   std::size_t threads = 0;
-  bool no_polish = false, enhance = false;
+  bool enhance = false;
 };
 
 // Topology and self-intersections are the contract of a simplifier: report them for the input too.
@@ -46,16 +45,11 @@ nlohmann::ordered_json input_facts(const TriangleSoup& soup) {
 int run_simplify(const SimplifyOptions& o) {
   const ThreadLimit parallelism(o.threads);
   ensure_distinct_files({o.input}, {o.output, o.json});
-  if ((o.ratio > 0) == (o.faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
+  if ((o.ratio > 0) == (o.params.target_faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "simplification");
-  SimplifyParams params;
+  SimplifyParams params = o.params;
   params.keep_ratio = o.ratio > 0 ? o.ratio : 1.0;
-  params.target_faces = o.faces;
-  params.cost = kCosts.at(o.cost);
-  params.max_error = o.max_error;
-  params.min_angle_deg = o.min_angle;
-  params.polish = !o.no_polish;
   ProgressBar bar("simplify");
   params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   SimplifyAndEnhanceResult enhanced;  // --enhance: the Fig. 6 combination's figures
@@ -85,9 +79,9 @@ int run_simplify(const SimplifyOptions& o) {
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
-  json["cost"] = o.cost;
-  json["min_angle_deg"] = o.min_angle;
-  json["max_error"] = o.max_error;
+  json["cost"] = choice_name(collapse_costs(), params.cost);
+  json["min_angle_deg"] = params.min_angle_deg;
+  json["max_error"] = params.max_error;
   json.update(o.enhance ? to_json(enhanced) : to_json(result));
   json["input_topology"] = input_topology;
   json["quality"] = to_json(quality);
@@ -99,7 +93,7 @@ int run_simplify(const SimplifyOptions& o) {
               << " % of faces, radius ratio p95 " << quality.radius_ratio.p95 << '\n';
   if (!result.reached_target)
     std::cerr << "meshprep: warning: stopped at " << result.faces_after << " faces, target " << result.target_faces
-              << " (no further collapse passes the guards" << (o.max_error > 0 ? " and --max-error" : "")
+              << " (no further collapse passes the guards" << (params.max_error > 0 ? " and --max-error" : "")
               << (result.intersection_retries > 0 ? "; the error was bounded where the surface would intersect itself" : "")
               << ")\n";
   return kSuccess;
@@ -112,29 +106,20 @@ Action add_simplify_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("simplify", "Reduce a surface mesh to a target size by edge collapse");
   cmd->add_option("input", o->input, "Surface mesh (manifold; closed or with boundaries)")->required();
   cmd->add_option("-o,--output", o->output, "Simplified surface (.off .obj .ply .stl)")->required();
-  auto* ratio = cmd->add_option("--ratio", o->ratio, "Fraction of the faces kept, in (0, 1]")
-                    ->check(CLI::Range(1e-9, 1.0));
-  cmd->add_option("--faces", o->faces, "Target number of faces")->check(CLI::PositiveNumber)->excludes(ratio);
-  cmd->add_option("--cost", o->cost,
-                  "Collapse cost: bending (the paper's bending energy as a shape factor on a quadric error "
-                  "memory), distance (the paper's simple cost: shortest edge first, placed on the local RBF "
-                  "surface) or quadric (OpenMesh's quadric decimater, the baseline, no shape guard)")
-      ->check(CLI::IsMember({"bending", "distance", "quadric"}))
-      ->capture_default_str();
-  cmd->add_option("--max-error", o->max_error,
-                  "Refuse collapses whose estimated deviation exceeds this fraction of the bounding-box diagonal "
-                  "(0 = no limit; the target may then not be reached)")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd->add_option("--min-angle", o->min_angle,
-                  "Refuse collapses creating a triangle angle below this (degrees) unless the faces around the "
-                  "edge already had a smaller one; 0 disables")
-      ->check(CLI::Range(0.0, 59.0))
-      ->capture_default_str();
+  const SimplifyParameters& p = simplify_parameters();
+  // --ratio has no default here: one of --ratio and --faces is required.
+  auto* ratio = cmd->add_option(p.keep_ratio.flag, o->ratio, capitalised(p.keep_ratio.help))
+                    ->check(range_check(p.keep_ratio.range));
+  cmd->add_option(p.target_faces.flag, o->params.target_faces, "Target number of faces")
+      ->check(CLI::PositiveNumber)
+      ->excludes(ratio);
+  add_choice(*cmd, p.cost, o->params.cost, collapse_costs());
+  add_parameter(*cmd, p.max_error, o->params.max_error);
+  add_parameter(*cmd, p.min_angle_deg, o->params.min_angle_deg);
   cmd->add_flag("--enhance", o->enhance,
                 "Reduce in three stages, each followed by the statistical enhancement against the input (meshprep "
                 "enhance; the paper's Figure 6 combination)");
-  cmd->add_flag("--no-polish", o->no_polish, "Skip the flips and relaxation that improve the angles, and the fit to the original, after collapsing");
+  add_parameter(*cmd, p.polish, o->params.polish);
   add_samples_option(*cmd, o->samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");

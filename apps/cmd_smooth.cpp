@@ -2,6 +2,7 @@
 //   [--smoothing L|inf] [--relaxation F] [--feature-angle DEG] [--preserve-volume] [--threads N]
 //   [--json FILE|-]
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 #include "stage_failure.h"
@@ -9,25 +10,21 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/smooth/smooth.h"
+#include "meshprep/preprocess/smooth/smooth_parameters.h"
 #include "meshprep/quality/json_values.h"
 #include "meshprep/quality/report.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/triangle_metrics.h"
 #include "meshprep/report/report_writers.h"
 
-#include <cmath>
 #include <iostream>
-#include <map>
 #include <memory>
 
 namespace meshprep::cli {
 namespace {
 
-const std::map<std::string, SmoothMethod> kMethods = {
-    {"rbf", SmoothMethod::Rbf}, {"taubin", SmoothMethod::Taubin}, {"laplace", SmoothMethod::Laplace}};
-
 struct SmoothOptions {
-  std::string input, output, json, method = "rbf";
+  std::string input, output, json;
   SmoothParams params;
   std::size_t samples = QualityParams().distance_samples;
   std::size_t threads = 0;
@@ -38,7 +35,6 @@ int run_smooth(SmoothOptions o) {
   ensure_distinct_files({o.input}, {o.output, o.json});
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "smoothing");
-  o.params.method = kMethods.at(o.method);
   ProgressBar bar("smooth");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const SmoothResult result = run_stage_on(o.input, [&] { return smooth(loaded.mesh, o.params); });
@@ -67,7 +63,8 @@ int run_smooth(SmoothOptions o) {
   json["quality"] = to_json(quality);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
-    std::cout << o.input << " -> " << o.output << ": " << o.method << ", " << result.iterations << " iteration(s) in "
+    std::cout << o.input << " -> " << o.output << ": " << choice_name(smooth_methods(), o.params.method) << ", "
+              << result.iterations << " iteration(s) in "
               << result.seconds << " s; moved at most " << result.max_displacement << ", Hausdorff to the input "
               << quality.reference->hausdorff_relative << " of the diagonal";
     if (result.volume_before) std::cout << ", volume change " << 100 * (*result.volume_after / *result.volume_before - 1) << " %";
@@ -85,42 +82,14 @@ Action add_smooth_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("smooth", "Denoise a surface mesh, keeping its sharp features (RBF smoothing)");
   cmd->add_option("input", o->input, "Surface mesh (manifold; closed or with boundaries)")->required();
   cmd->add_option("-o,--output", o->output, "Smoothed surface (.off .obj .ply .stl)")->required();
-  cmd->add_option("--method", o->method,
-                  "rbf (the paper's: each vertex onto the local RBF surface of its neighbours on its side of "
-                  "any feature), taubin or laplace (baselines)")
-      ->check(CLI::IsMember({"rbf", "taubin", "laplace"}))
-      ->capture_default_str();
-  cmd->add_option("--iterations", o->params.iterations, "Smoothing iterations")
-      ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
-      ->capture_default_str();
-  cmd->add_option("--neighbors", o->params.neighbors, "rbf: neighbours of each vertex's local surface")
-      ->check(CLI::Range(std::size_t(13), std::size_t(200)))
-      ->capture_default_str();
-  cmd->add_option("--smoothing", o->params.smoothing,
-                  "rbf: lambda of the weighted thin-plate smoothing spline; inf, its limit, is the weighted "
-                  "least-squares cubic (0 interpolates the neighbours)")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            try {
-              return std::stod(value) >= 0 ? std::string() : "must be >= 0 (or inf)";
-            } catch (const std::exception&) {
-              return "expected a number >= 0 or inf, not '" + value + "'";
-            }
-          },
-          "L|inf")
-                 .name(kInfinityMeaningful))
-      ->capture_default_str();
-  cmd->add_option("--relaxation", o->params.relaxation,
-                  "rbf: how far each vertex goes towards its 1-ring's centroid before it is put on its local "
-                  "surface (evens out the triangles; 0 = along the normal only)")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd->add_option("--feature-angle", o->params.feature_angle_deg,
-                  "rbf: edges with a larger dihedral angle (degrees) are creases, kept sharp; 180 = none")
-      ->check(CLI::Range(1.0, 180.0))
-      ->capture_default_str();
-  cmd->add_flag("--preserve-volume", o->params.preserve_volume,
-                "Closed surfaces: offset the result along its normals so that the enclosed volume is unchanged");
+  const SmoothParameters& p = smooth_parameters();
+  add_choice(*cmd, p.method, o->params.method, smooth_methods());
+  add_parameter(*cmd, p.iterations, o->params.iterations);
+  add_parameter(*cmd, p.neighbors, o->params.neighbors);
+  add_parameter(*cmd, p.smoothing, o->params.smoothing);
+  add_parameter(*cmd, p.relaxation, o->params.relaxation);
+  add_parameter(*cmd, p.feature_angle_deg, o->params.feature_angle_deg);
+  add_parameter(*cmd, p.preserve_volume, o->params.preserve_volume);
   add_samples_option(*cmd, o->samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");

@@ -5,12 +5,14 @@
 //   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--timeout SECONDS] [--threads N] [--json FILE|-]
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "interrupt.h"
 #include "tet_improvement.h"
 
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_check.h"
+#include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/solver_targets.h"
@@ -162,19 +164,13 @@ Action add_tetrahedralize_command(CLI::App& app) {
   cmd->add_option("surface", o->input, "Closed surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output,
                   "Tet mesh: .msh .vtu .vtk .mesh .node .inp (format from the extension)")->required();
-  cmd->add_option("--radius-edge", o->params.radius_edge, "TetGen -q bound on circumradius/shortest edge (0 = no refinement)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 100.0));
-  cmd->add_option("--min-dihedral", o->params.min_dihedral_deg, "TetGen -q target for the smallest dihedral angle, degrees")
-      ->check(CLI::Range(0.0, 30.0));
+  const TetParameters& p = tet_parameters();
+  add_parameter(*cmd, p.radius_edge, o->params.radius_edge);
+  add_parameter(*cmd, p.min_dihedral_deg, o->params.min_dihedral_deg);
   auto* abs_volume = cmd->add_option("--max-volume", o->params.max_volume, "Largest tet volume (absolute)")
                          ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-volume-relative", o->params.max_volume_relative,
-                  "Largest tet volume as a fraction of the enclosed volume")
-      ->check(CLI::Range(1e-12, 1.0))
-      ->excludes(abs_volume);
-  cmd->add_flag("--keep-surface", o->params.keep_surface,
-                "Keep the input triangles exactly on the boundary (TetGen -Y); default: TetGen may split them");
+  add_parameter(*cmd, p.max_volume_relative, o->params.max_volume_relative)->excludes(abs_volume);
+  add_parameter(*cmd, p.keep_surface, o->params.keep_surface);
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();

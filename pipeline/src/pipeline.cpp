@@ -40,12 +40,6 @@ std::string figure(double value, int digits = 3) {
   return out.str();
 }
 
-// A reconstructed terrain's grid oversamples its points (300 x 300 vertices for 10,000 samples).
-// 7 % of its faces stay within RMS 1.2e-4 of the diagonal of it on Jacksboro (5.4 m, under a third
-// of the reconstruction's own 18.5 m error), and keep the block's tets (TetGen's time) within the
-// pipeline's 10 s budget; 10 % gives 8.5e-5 with 32 % more tets (docs/pipeline.md).
-constexpr double kTerrainRatio = 0.07;
-
 class Run {
  public:
   Run(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer)
@@ -234,7 +228,7 @@ class Run {
   // Whether the simplify stage runs: switched on, with a target (points always have one).
   bool simplifies() const {
     const PipelineConfig::Simplify& c = config_.simplify;
-    return c.enabled && (c.target_faces != 0 || c.ratio.has_value() || result_.from_points);
+    return c.enabled && (c.params.target_faces != 0 || c.ratio.has_value() || result_.from_points);
   }
 
   void simplify_stage() {
@@ -244,8 +238,7 @@ class Run {
     if (!simplifies()) return skip("simplify", "no target for a mesh input (give --ratio or --target-faces)");
     StageRecord record = started("simplify");
     SimplifyParams params = c.params;
-    params.target_faces = c.target_faces;
-    params.keep_ratio = c.ratio ? *c.ratio : has_ratio ? kTerrainRatio : 1.0;
+    params.keep_ratio = c.ratio ? *c.ratio : has_ratio ? PipelineConfig::Simplify::kTerrainRatio : 1.0;
     params.progress = progress();
     const SimplifyResult s = on_input([&] { return simplify(mesh_, params); });
     record.seconds = s.seconds;

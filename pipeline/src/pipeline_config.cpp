@@ -4,11 +4,16 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/fem/fem_parameters.h"
+#include "meshprep/preprocess/enhance/enhance_parameters.h"
+#include "meshprep/preprocess/reconstruct/reconstruct_parameters.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
+#include "meshprep/preprocess/simplify/simplify_parameters.h"
+#include "meshprep/preprocess/smooth/smooth_parameters.h"
+#include "meshprep/quality/quality_parameters.h"
 
 #include <cmath>
 #include <functional>
-#include <sstream>
 #include <utility>
 
 namespace meshprep {
@@ -49,31 +54,21 @@ std::string shown(const Json& value) {
   return value.dump();
 }
 
-std::string range_text(double lo, double hi, bool lo_open) {
-  std::ostringstream out;
-  out << (lo_open ? "(" : "[") << lo << ", ";
-  if (std::isinf(hi)) out << "inf)";
-  else out << hi << "]";
-  return out.str();
-}
-
-Key number(const char* section, const char* name, double& field, double lo, double hi, bool lo_open,
-           std::string description) {
-  const std::string type = "number in " + range_text(lo, hi, lo_open);
-  return {section, name, type, std::move(description),
-          [&field, lo, hi, lo_open, type](const Json& v) {
-            if (!v.is_number()) throw BadValue{"expected a " + type + ", not " + shown(v)};
-            const double x = v.get<double>();
-            if (!(lo_open ? x > lo : x >= lo) || !(x <= hi)) throw BadValue{"expected a " + type + ", not " + shown(v)};
-            field = x;
+Key number(const char* section, const ParameterInfo& info, double& field) {
+  const Range range = info.range;
+  const std::string type = "number in " + range.text();
+  return {section, info.key, type, info.help,
+          [&field, range, type](const Json& v) {
+            if (!v.is_number() || !range.contains(v.get<double>())) throw BadValue{"expected a " + type + ", not " + shown(v)};
+            field = v.get<double>();
           },
           [&field] { return OrderedJson(field); }};
 }
 
 // A number >= 0, or "inf" (JSON has no infinity), written back the same way.
-Key number_or_inf(const char* section, const char* name, double& field, std::string description) {
+Key number_or_inf(const char* section, const ParameterInfo& info, double& field) {
   const std::string type = "number in [0, inf) or \"inf\"";
-  return {section, name, type, std::move(description),
+  return {section, info.key, type, info.help,
           [&field, type](const Json& v) {
             if (v.is_string() && v.get<std::string>() == "inf") {
               field = INFINITY;
@@ -85,20 +80,35 @@ Key number_or_inf(const char* section, const char* name, double& field, std::str
           [&field] { return std::isinf(field) ? OrderedJson("inf") : OrderedJson(field); }};
 }
 
-Key count(const char* section, const char* name, std::size_t& field, std::size_t lo, std::size_t hi,
-          std::string description) {
-  const std::string type = "integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  return {section, name, type, std::move(description),
-          [&field, lo, hi, type](const Json& v) {
-            if (!v.is_number_integer() || v.get<long long>() < 0) throw BadValue{"expected an " + type + ", not " + shown(v)};
-            const auto x = v.get<std::size_t>();
-            if (x < lo || x > hi) throw BadValue{"expected an " + type + ", not " + shown(v)};
-            field = x;
+// A number in the range, or "auto" (unset: the stage decides), written back the same way.
+Key number_or_auto(const char* section, const ParameterInfo& info, std::optional<double>& field) {
+  const Range range = info.range;
+  const std::string type = "number in " + range.text() + " or \"auto\"";
+  return {section, info.key, type, info.help,
+          [&field, range, type](const Json& v) {
+            if (v.is_string() && v.get<std::string>() == "auto") {
+              field.reset();
+              return;
+            }
+            if (!v.is_number() || !range.contains(v.get<double>())) throw BadValue{"expected a " + type + ", not " + shown(v)};
+            field = v.get<double>();
+          },
+          [&field] { return field ? OrderedJson(*field) : OrderedJson("auto"); }};
+}
+
+Key count(const char* section, const ParameterInfo& info, std::size_t& field) {
+  const Range range = info.range;
+  const std::string type = "integer in " + range.text();
+  return {section, info.key, type, info.help,
+          [&field, range, type](const Json& v) {
+            if (!v.is_number_integer() || v.get<long long>() < 0 || !range.contains(static_cast<double>(v.get<std::size_t>())))
+              throw BadValue{"expected an " + type + ", not " + shown(v)};
+            field = v.get<std::size_t>();
           },
           [&field] { return OrderedJson(field); }};
 }
 
-Key flag(const char* section, const char* name, bool& field, std::string description) {
+Key flag(const char* section, const std::string& name, bool& field, std::string description) {
   return {section, name, "true or false", std::move(description),
           [&field](const Json& v) {
             if (!v.is_boolean()) throw BadValue{"expected true or false, not " + shown(v)};
@@ -107,12 +117,12 @@ Key flag(const char* section, const char* name, bool& field, std::string descrip
           [&field] { return OrderedJson(field); }};
 }
 
+Key flag(const char* section, const ParameterInfo& info, bool& field) { return flag(section, info.key, field, info.help); }
+
 // A string naming one of `choices`, stored as the matching value of type T.
 template <class T>
-Key choice(const char* section, const char* name, T& field, std::vector<std::pair<std::string, T>> choices,
-           std::string description) {
-  std::string type = "one of";
-  for (std::size_t i = 0; i < choices.size(); ++i) type += (i ? ", " : " ") + choices[i].first;
+Key choice(const char* section, const std::string& name, T& field, Choices<T> choices, std::string description) {
+  const std::string type = "one of " + choice_names(choices);
   return {section, name, type, std::move(description),
           [&field, choices, type](const Json& v) {
             if (v.is_string())
@@ -124,162 +134,130 @@ Key choice(const char* section, const char* name, T& field, std::vector<std::pai
             throw BadValue{"expected " + type + ", not " + shown(v)};
           },
           [&field, choices] {
-            for (const auto& [text, value] : choices)
-              if (field == value) return OrderedJson(text);
-            return OrderedJson(nullptr);
+            const std::string chosen = choice_name(choices, field);
+            return chosen.empty() ? OrderedJson(nullptr) : OrderedJson(chosen);
           }};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {
   ReconstructParams& p = r.params;
+  const ReconstructParameters& info = reconstruct_parameters();
+  const Range grid = info.resolution.range;
+  const std::string grid_type = "[NX, NY], integers in " + grid.text();
   std::vector<Key> keys;
-  keys.push_back({"reconstruct", "resolution", "[NX, NY], integers in [2, 100000]",
-                  "grid vertices along the footprint (unless spacing or vertices is set)",
-                  [&p](const Json& v) {
-                    const bool ok = v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer() &&
-                                    v[0].get<long long>() >= 2 && v[1].get<long long>() >= 2 &&
-                                    v[0].get<long long>() <= 100000 && v[1].get<long long>() <= 100000;
-                    if (!ok) throw BadValue{"expected [NX, NY] with integers in [2, 100000], not " + shown(v)};
+  keys.push_back({"reconstruct", info.resolution.key, grid_type, info.resolution.help + " (unless spacing or vertices is set)",
+                  [&p, grid, grid_type](const Json& v) {
+                    const auto in_range = [&grid](const Json& n) {
+                      return n.is_number_integer() && n.get<long long>() >= 0 &&
+                             grid.contains(static_cast<double>(n.get<long long>()));
+                    };
+                    if (!(v.is_array() && v.size() == 2 && in_range(v[0]) && in_range(v[1])))
+                      throw BadValue{"expected " + grid_type + ", not " + shown(v)};
                     p.columns = v[0].get<std::size_t>();
                     p.rows = v[1].get<std::size_t>();
                   },
                   [&p] { return OrderedJson::array({p.columns, p.rows}); }});
-  keys.push_back(number("reconstruct", "spacing", p.spacing, 0, INFINITY, false,
-                        "grid spacing in the reference plane; 0 = use resolution"));
-  keys.push_back(count("reconstruct", "vertices", p.vertices, 0, 100000000,
-                       "about this many grid vertices on square cells; 0 = use resolution or spacing"));
-  keys.push_back(count("reconstruct", "leaf_size", p.fit.leaf_size, 1, 100000,
-                       "K: samples per k-d tree cell, one thin-plate patch each"));
-  keys.push_back(count("reconstruct", "neighbors", p.fit.neighbors, 3, 1000, "samples interpolated by each patch"));
-  keys.push_back({"reconstruct", "variation_threshold", "a number >= 0 or \"pNN\" (a percentile)",
-                  "patches whose surface variation sigma exceeds this grow: the paper's 0.3, or a percentile of the "
-                  "patches' sigma",
-                  [&r](const Json& v) {
+  keys.push_back(number("reconstruct", info.spacing, p.spacing));
+  keys.push_back(count("reconstruct", info.vertices, p.vertices));
+  keys.push_back(count("reconstruct", info.leaf_size, p.fit.leaf_size));
+  keys.push_back(count("reconstruct", info.neighbors, p.fit.neighbors));
+  keys.push_back({"reconstruct", info.variation_threshold.key, "a number >= 0 or \"pNN\" (a percentile)",
+                  info.variation_threshold.help,
+                  [&p](const Json& v) {
                     if (!v.is_string() && !v.is_number()) throw BadValue{variation_rule_error(shown(v))};
                     const std::string text = v.is_string() ? v.get<std::string>() : shown(v);
-                    if (!apply_variation_rule(text, r.params.fit)) throw BadValue{variation_rule_error(text)};
-                    r.variation_threshold = text;
+                    if (!apply_variation_rule(text, p.fit)) throw BadValue{variation_rule_error(text)};
                   },
-                  [&r] { return OrderedJson(r.variation_threshold); }});
-  keys.push_back(number("reconstruct", "variation_growth", p.fit.variation_growth, 1, 4, false,
-                        "support radius factor of a grown patch (its samples grow by the square)"));
-  keys.push_back(number("reconstruct", "max_gap", p.max_gap, 0, INFINITY, false,
-                        "triangles farther than this from every sample are gaps; 0 = 3 x the median sample spacing"));
-  keys.push_back(flag("reconstruct", "fill_holes", p.fill_holes,
-                      "keep the triangles over interior gaps, flagged in the report, so the terrain can be closed "
-                      "into a block; false leaves them out"));
-  keys.push_back(flag("reconstruct", "adaptive", r.adaptive,
-                      "vertices dense where the surface bends, sparse where flat (slower)"));
+                  [&p] { return OrderedJson(variation_rule_text(p.fit)); }});
+  keys.push_back(number("reconstruct", info.variation_growth, p.fit.variation_growth));
+  keys.push_back(number("reconstruct", info.max_gap, p.max_gap));
+  keys.push_back(flag("reconstruct", info.fill_holes, p.fill_holes));
+  keys.push_back(flag("reconstruct", info.adaptive, r.adaptive));
   return keys;
 }
 
 std::vector<Key> simplify_keys(PipelineConfig::Simplify& s) {
+  const SimplifyParameters& info = simplify_parameters();
+  const Range ratio_range = info.keep_ratio.range;
+  const std::string ratio_type = "null or a number in " + ratio_range.text();
   std::vector<Key> keys;
   keys.push_back(flag("simplify", "enabled", s.enabled, "run the bending-energy edge collapse"));
-  keys.push_back({"simplify", "ratio", "null or a number in (0, 1]",
-                  "fraction of the faces kept; null = 0.07 for a reconstructed terrain, no simplification for a mesh",
-                  [&s](const Json& v) {
+  keys.push_back({"simplify", info.keep_ratio.key, ratio_type,
+                  info.keep_ratio.help + "; null = " + parameter_text(PipelineConfig::Simplify::kTerrainRatio) +
+                      " for a reconstructed terrain, no simplification for a mesh",
+                  [&s, ratio_range, ratio_type](const Json& v) {
                     if (v.is_null()) {
                       s.ratio.reset();
                       return;
                     }
-                    if (!v.is_number() || !(v.get<double>() > 0 && v.get<double>() <= 1))
-                      throw BadValue{"expected null or a number in (0, 1], not " + shown(v)};
+                    if (!v.is_number() || !ratio_range.contains(v.get<double>()))
+                      throw BadValue{"expected " + ratio_type + ", not " + shown(v)};
                     s.ratio = v.get<double>();
                   },
                   [&s] { return s.ratio ? OrderedJson(*s.ratio) : OrderedJson(nullptr); }});
-  keys.push_back(count("simplify", "target_faces", s.target_faces, 0, 1000000000,
-                       "target number of faces; 0 = use ratio"));
-  keys.push_back(choice<CollapseCost>("simplify", "cost", s.params.cost,
-                                      {{"bending", CollapseCost::Bending},
-                                       {"distance", CollapseCost::Distance},
-                                       {"quadric", CollapseCost::Quadric}},
-                                      "collapse cost (see meshprep simplify --help)"));
-  keys.push_back(number("simplify", "min_angle_deg", s.params.min_angle_deg, 0, 59, false,
-                        "collapses may not create a smaller triangle angle (degrees); 0 = off"));
-  keys.push_back(number("simplify", "max_error", s.params.max_error, 0, 1, false,
-                        "largest estimated deviation of a collapse / bounding-box diagonal; 0 = no limit"));
-  keys.push_back(flag("simplify", "polish", s.params.polish, "flips and relaxation after collapsing"));
+  keys.push_back(count("simplify", info.target_faces, s.params.target_faces));
+  keys.push_back(choice("simplify", info.cost.key, s.params.cost, collapse_costs(), info.cost.help));
+  keys.push_back(number("simplify", info.min_angle_deg, s.params.min_angle_deg));
+  keys.push_back(number("simplify", info.max_error, s.params.max_error));
+  keys.push_back(flag("simplify", info.polish, s.params.polish));
   return keys;
 }
 
 std::vector<Key> smooth_keys(PipelineConfig::Smooth& s) {
   SmoothParams& p = s.params;
+  const SmoothParameters& info = smooth_parameters();
   std::vector<Key> keys;
   keys.push_back(flag("smooth", "enabled", s.enabled, "denoise (off by default: a clean surface only moves away)"));
-  keys.push_back(choice<SmoothMethod>("smooth", "method", p.method,
-                                      {{"rbf", SmoothMethod::Rbf},
-                                       {"taubin", SmoothMethod::Taubin},
-                                       {"laplace", SmoothMethod::Laplace}},
-                                      "rbf (the paper's) or the taubin and laplace baselines"));
-  keys.push_back(count("smooth", "iterations", p.iterations, 1, 1000, "smoothing iterations"));
-  keys.push_back(count("smooth", "neighbors", p.neighbors, 13, 200, "rbf: neighbours of each vertex's local surface"));
-  keys.push_back(number_or_inf("smooth", "smoothing", p.smoothing,
-                               "rbf: lambda of the weighted thin-plate smoothing spline; inf = the weighted "
-                               "least-squares cubic; 0 interpolates"));
-  keys.push_back(number("smooth", "relaxation", p.relaxation, 0, 1, false,
-                        "rbf: how far each vertex goes towards its 1-ring's centroid before it is put on its surface"));
-  keys.push_back(number("smooth", "feature_angle_deg", p.feature_angle_deg, 1, 180, false,
-                        "rbf: edges with a larger dihedral angle are creases, kept sharp; 180 = none"));
-  keys.push_back(flag("smooth", "preserve_volume", p.preserve_volume, "closed surfaces keep their volume"));
+  keys.push_back(choice("smooth", info.method.key, p.method, smooth_methods(), info.method.help));
+  keys.push_back(count("smooth", info.iterations, p.iterations));
+  keys.push_back(count("smooth", info.neighbors, p.neighbors));
+  keys.push_back(number_or_inf("smooth", info.smoothing, p.smoothing));
+  keys.push_back(number("smooth", info.relaxation, p.relaxation));
+  keys.push_back(number("smooth", info.feature_angle_deg, p.feature_angle_deg));
+  keys.push_back(flag("smooth", info.preserve_volume, p.preserve_volume));
   return keys;
 }
 
 std::vector<Key> enhance_keys(PipelineConfig::Enhance& e) {
   EnhanceParams& p = e.params;
+  const EnhanceParameters& info = enhance_parameters();
   std::vector<Key> keys;
   keys.push_back(flag("enhance", "enabled", e.enabled, "the statistical triangle enhancement against the input"));
-  keys.push_back(count("enhance", "iterations", p.iterations, 1, 1000, "rounds at most"));
-  keys.push_back({"enhance", "max_deviation", "number in (0, 1] or \"auto\"",
-                  "a face may not move farther than this / bounding-box diagonal from the input surface; auto: as "
-                  "far as the simplified surface already is, at most 0.002",
-                  [&p](const Json& v) {
-                    if (v.is_string() && v.get<std::string>() == "auto") {
-                      p.max_deviation.reset();
-                      return;
-                    }
-                    if (!v.is_number() || !(v.get<double>() > 0 && v.get<double>() <= 1))
-                      throw BadValue{"expected a number in (0, 1] or \"auto\", not " + shown(v)};
-                    p.max_deviation = v.get<double>();
-                  },
-                  [&p] { return p.max_deviation ? OrderedJson(*p.max_deviation) : OrderedJson("auto"); }});
-  keys.push_back(number("enhance", "target_min_angle_deg", p.target_min_angle_deg, 1, 59, false,
-                        "faces with a smaller angle (degrees) are always in the bad tail"));
-  keys.push_back(number("enhance", "feature_angle_deg", p.feature_angle_deg, 1, 180, false,
-                        "edges with a larger dihedral angle are creases: their vertices slide along them"));
-  keys.push_back(flag("enhance", "flips", p.flips, "flip edges where moving vertices cannot help"));
+  keys.push_back(count("enhance", info.iterations, p.iterations));
+  keys.push_back(number_or_auto("enhance", info.max_deviation, p.max_deviation));
+  keys.push_back(number("enhance", info.target_min_angle_deg, p.target_min_angle_deg));
+  keys.push_back(number("enhance", info.feature_angle_deg, p.feature_angle_deg));
+  keys.push_back(flag("enhance", info.flips, p.flips));
   return keys;
 }
 
 std::vector<Key> quality_keys(PipelineConfig::Quality& q) {
-  return {count("quality", "distance_samples", q.params.distance_samples, 1000, 100000000,
-                "area-weighted samples per direction for the final Hausdorff and RMS distances")};
+  return {count("quality", quality_parameters().distance_samples, q.params.distance_samples)};
 }
 
 std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
   TetParams& p = t.params;
+  const TetParameters& info = tet_parameters();
   std::vector<Key> keys;
   keys.push_back(flag("tetrahedralize", "enabled", t.enabled, "TetGen tetrahedralisation of the final surface"));
-  keys.push_back(number("tetrahedralize", "radius_edge", p.radius_edge, 0, 100, false,
-                        "TetGen -q bound on circumradius / shortest edge; 0 = no refinement"));
-  keys.push_back(number("tetrahedralize", "min_dihedral_deg", p.min_dihedral_deg, 0, 30, false,
-                        "TetGen -q dihedral target (degrees); 0 = TetGen's default"));
-  keys.push_back(number("tetrahedralize", "max_volume_relative", p.max_volume_relative, 0, 1, false,
-                        "largest tet volume / enclosed volume; 0 = no bound"));
-  keys.push_back({"tetrahedralize", "keep_surface", "true, false or \"auto\"",
-                  "the boundary keeps exactly the surface triangles (TetGen -Y); auto: yes for a closed surface, "
-                  "no for an extruded block",
+  keys.push_back(number("tetrahedralize", info.radius_edge, p.radius_edge));
+  keys.push_back(number("tetrahedralize", info.min_dihedral_deg, p.min_dihedral_deg));
+  keys.push_back(number("tetrahedralize", info.max_volume_relative, p.max_volume_relative));
+  keys.push_back({"tetrahedralize", info.keep_surface.key, "true, false or \"auto\"",
+                  info.keep_surface.help + "; auto: yes for a closed surface, no for an extruded block",
                   [&t](const Json& v) {
                     if (v.is_boolean()) t.keep_surface = v.get<bool>();
                     else if (v.is_string() && v.get<std::string>() == "auto") t.keep_surface.reset();
                     else throw BadValue{"expected true, false or \"auto\", not " + shown(v)};
                   },
                   [&t] { return t.keep_surface ? OrderedJson(*t.keep_surface) : OrderedJson("auto"); }});
-  keys.push_back(number("tetrahedralize", "extrude_base", t.extrude_base, 0, INFINITY, false,
-                        "an open height field becomes a block with its base this far below the lowest point; 0 = use "
-                        "extrude_base_relative"));
-  keys.push_back(number("tetrahedralize", "extrude_base_relative", t.extrude_base_relative, 0, 100, true,
-                        "the same depth / bounding-box diagonal"));
+  keys.push_back(number("tetrahedralize",
+                        {"extrude_base", "", "an open height field becomes a block with its base this far below the "
+                         "lowest point; 0 = use extrude_base_relative", {0, INFINITY, false, true}},
+                        t.extrude_base));
+  keys.push_back(number("tetrahedralize",
+                        {"extrude_base_relative", "", "the same depth / bounding-box diagonal", {0, 100, true, false}},
+                        t.extrude_base_relative));
   keys.push_back(choice<std::string>("tetrahedralize", "format", t.format,
                                      {{"msh", "msh"}, {"vtu", "vtu"}, {"mesh", "mesh"}, {"inp", "inp"}, {"node", "node"}},
                                      "the tet mesh file tets.FORMAT: Gmsh, VTK XML, Medit, Abaqus/CalculiX, TetGen"));
@@ -291,29 +269,23 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
 
 std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
   ImproveParams& p = i.params;
+  const ImproveParameters& info = improve_parameters();
   std::vector<Key> keys;
   keys.push_back(flag("improve", "enabled", i.enabled,
                       "improve TetGen's tets (flips, smoothing, new inner vertices; the boundary is kept exactly)"));
-  keys.push_back(number("improve", "goal_min_dihedral_deg", p.goal_min_dihedral_deg, 0, 59, true,
-                        "the tets with a smaller dihedral angle (degrees) are improved"));
-  keys.push_back(number("improve", "goal_max_dihedral_deg", p.goal_max_dihedral_deg, 60, 179, true,
-                        "... and those with a larger one (degrees)"));
-  keys.push_back(flag("improve", "insertion", p.insertion, "insert inner vertices where flips and smoothing are stuck"));
-  keys.push_back(count("improve", "max_passes", p.max_passes, 1, 1000, "passes over the tets below the goal, at most"));
-  keys.push_back(number("improve", "time_limit_seconds", p.time_limit_seconds, 0, INFINITY, false,
-                        "stop improving after this many seconds (the tets so far are kept); 0 = no limit"));
+  keys.push_back(number("improve", info.goal_min_dihedral_deg, p.goal_min_dihedral_deg));
+  keys.push_back(number("improve", info.goal_max_dihedral_deg, p.goal_max_dihedral_deg));
+  keys.push_back(flag("improve", info.insertion, p.insertion));
+  keys.push_back(count("improve", info.max_passes, p.max_passes));
+  keys.push_back(number("improve", info.time_limit_seconds, p.time_limit_seconds));
   return keys;
 }
 
 std::vector<Key> verdict_keys(TetThresholds& t) {
-  std::vector<Key> keys;
-  keys.push_back(number("verdict", "min_dihedral_deg", t.min_dihedral_deg, 0, 180, false,
-                        "FEM-ready only if the tets' smallest dihedral angle is at least this (degrees); 0 = any"));
-  keys.push_back(number("verdict", "max_dihedral_deg", t.max_dihedral_deg, 0, 180, false,
-                        "FEM-ready only if the tets' largest dihedral angle is at most this (degrees); 180 = any"));
-  keys.push_back(count("verdict", "max_inverted_tets", t.max_inverted_tets, 0, 1000000000,
-                       "FEM-ready only if at most this many tets are inverted or flat (volume <= 0)"));
-  return keys;
+  const VerdictParameters& info = verdict_parameters();
+  return {number("verdict", info.min_dihedral_deg, t.min_dihedral_deg),
+          number("verdict", info.max_dihedral_deg, t.max_dihedral_deg),
+          count("verdict", info.max_inverted_tets, t.max_inverted_tets)};
 }
 
 std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c) {

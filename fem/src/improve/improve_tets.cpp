@@ -12,6 +12,7 @@
 #include "vertex_smoothing.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/fem/fem_parameters.h"
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/report/number_format.h"
@@ -359,11 +360,10 @@ class Schedule {
 }  // namespace
 
 void check_improve_params(const ImproveParams& p) {
-  if (!(p.goal_min_dihedral_deg > 0 && p.goal_min_dihedral_deg < 60))
-    throw InvalidInput("improve: goal_min_dihedral_deg must be in (0, 60), got " + std::to_string(p.goal_min_dihedral_deg));
-  if (!(p.goal_max_dihedral_deg > 60 && p.goal_max_dihedral_deg < 180))
-    throw InvalidInput("improve: goal_max_dihedral_deg must be in (60, 180), got " + std::to_string(p.goal_max_dihedral_deg));
-  if (p.max_passes < 1) throw InvalidInput("improve: max_passes must be at least 1");
+  const ImproveParameters& info = improve_parameters();
+  check_parameter("improve", info.goal_min_dihedral_deg, p.goal_min_dihedral_deg);
+  check_parameter("improve", info.goal_max_dihedral_deg, p.goal_max_dihedral_deg);
+  check_parameter("improve", info.max_passes, static_cast<double>(p.max_passes));
   if (!(p.time_limit_seconds >= 0 && std::isfinite(p.time_limit_seconds)))
     throw InvalidInput("improve: time_limit_seconds must be finite and >= 0");
 }

@@ -1,4 +1,5 @@
 #include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/enhance/enhance_parameters.h"
 
 #include "enhance/enhance_defaults.h"
 #include "enhance/move_guards.h"
@@ -56,7 +57,7 @@ constexpr int kStaleRounds = 2;
 // The automatic bound is never looser than the one the constants were tuned with: a coarse input
 // (the corpus's sphere simplified by half is 2.9 % of its diagonal off) would otherwise let every
 // face move that far.
-constexpr double kLoosest = detail::enhance_defaults::kMaxDeviationOnReference;
+constexpr double kLoosest = EnhanceParams::kLargestAutoDeviation;
 
 // Relative distances under this count as none: the input lies on its reference.
 constexpr double kOnReference = 1e-9;
@@ -78,14 +79,15 @@ double input_deviation(const TriangleSoup& input, const TriangleSoup* reference,
 
 void check(const EnhanceParams& params, const TriMesh& mesh) {
   if (mesh.n_faces() == 0) throw InvalidInput("enhance: the mesh has no faces");
-  if (!(params.max_deviation.value_or(1) > 0 && params.max_deviation.value_or(1) <= 1) ||
-      !(params.target_min_angle_deg > 0 && params.target_min_angle_deg < 60) ||
-      !(params.feature_angle_deg > 0 && params.feature_angle_deg <= 180) || !(params.tail_weight >= 0) ||
+  const EnhanceParameters& info = enhance_parameters();
+  if (params.max_deviation) check_parameter("enhance", info.max_deviation, *params.max_deviation);
+  check_parameter("enhance", info.target_min_angle_deg, params.target_min_angle_deg);
+  check_parameter("enhance", info.feature_angle_deg, params.feature_angle_deg);
+  if (!(params.tail_weight >= 0) ||
       !(params.fidelity_weight >= 0) || !(params.flip_dihedral_deg >= 0 && params.flip_dihedral_deg < 90) ||
       !(params.max_face_change >= 0 && params.max_face_change <= 1) ||
       !std::isfinite(params.tail_k))
-    throw InvalidInput("enhance: parameters out of range (max deviation > 0, target angle in (0, 60), feature angle in "
-                       "(0, 180], flip dihedral in [0, 90), weights >= 0)");
+    throw InvalidInput("enhance: the statistic's constants are out of range (flip dihedral in [0, 90), weights >= 0)");
 }
 
 }  // namespace

@@ -20,9 +20,6 @@ constexpr double kTailK = 1.34;
 constexpr double kTailWeight = 0.11;
 constexpr double kFidelityWeight = 69.7;
 constexpr double kFlipDihedralDeg = 29.1;
-
-// The deviation bound the constants above were tuned with: the automatic bound where the input
-// lies on its reference, and its largest value otherwise (EnhanceParams::max_deviation unset).
-constexpr double kMaxDeviationOnReference = 2e-3;
+// They were tuned with the deviation bound EnhanceParams::kLargestAutoDeviation.
 
 }  // namespace meshprep::detail::enhance_defaults

@@ -1,5 +1,7 @@
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
 
+#include "meshprep/core/parameter.h"
+
 #include <exception>
 
 namespace meshprep {
@@ -17,6 +19,11 @@ bool apply_variation_rule(const std::string& text, PartitionOfUnityParams& param
   } catch (const std::exception&) {
     return false;
   }
+}
+
+std::string variation_rule_text(const PartitionOfUnityParams& params) {
+  return params.variation_percentile >= 0 ? "p" + parameter_text(params.variation_percentile)
+                                          : parameter_text(params.variation_threshold);
 }
 
 std::string variation_rule_error(const std::string& text) {

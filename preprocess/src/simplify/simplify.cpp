@@ -1,4 +1,5 @@
 #include "meshprep/preprocess/simplify/simplify.h"
+#include "meshprep/preprocess/simplify/simplify_parameters.h"
 
 #include "simplify/collapse_quadrics.h"
 #include "simplify/edge_collapse.h"
@@ -55,8 +56,7 @@ void request_collapse_attributes(TriMesh& mesh) {
 
 std::size_t target_of(const TriMesh& mesh, const SimplifyParams& params) {
   if (params.target_faces > 0) return params.target_faces;
-  if (!(params.keep_ratio > 0 && params.keep_ratio <= 1))
-    throw InvalidInput("the ratio of faces kept must be in (0, 1]");
+  check_parameter("simplify", simplify_parameters().keep_ratio, params.keep_ratio);
   return static_cast<std::size_t>(std::llround(params.keep_ratio * static_cast<double>(mesh.n_faces())));
 }
 
@@ -218,9 +218,8 @@ SimplifyResult reduce(TriMesh& mesh, const SimplifyParams& params) {
 
 void check(const TriMesh& mesh, const SimplifyParams& params) {
   if (mesh.n_faces() == 0) throw InvalidInput("the mesh has no faces to simplify");
-  // Written so that NaN fails them (a NaN angle bound would switch the guard off silently).
-  if (!(params.min_angle_deg >= 0 && params.min_angle_deg < 60))
-    throw InvalidInput("the minimum angle must be in [0, 60) degrees");
+  // NaN fails the range (a NaN angle bound would switch the guard off silently).
+  check_parameter("simplify", simplify_parameters().min_angle_deg, params.min_angle_deg);
   if (!(params.max_error >= 0 && std::isfinite(params.max_error)))
     throw InvalidInput("the maximum error must be a finite number >= 0");
 }

@@ -1,4 +1,5 @@
 #include "meshprep/preprocess/smooth/smooth.h"
+#include "meshprep/preprocess/smooth/smooth_parameters.h"
 
 #include "meshprep/quality/json_values.h"
 
@@ -7,23 +8,11 @@
 #include <cmath>
 
 namespace meshprep {
-namespace {
-
-const char* method_name(SmoothMethod method) {
-  switch (method) {
-    case SmoothMethod::Rbf: return "rbf";
-    case SmoothMethod::Taubin: return "taubin";
-    case SmoothMethod::Laplace: return "laplace";
-  }
-  return "?";
-}
-
-}  // namespace
 
 nlohmann::ordered_json to_json(const SmoothResult& result, const SmoothParams& params) {
   using Json = nlohmann::ordered_json;
   Json json;
-  json["method"] = method_name(params.method);
+  json["method"] = choice_name(smooth_methods(), params.method);
   json["iterations"] = result.iterations;
   if (params.method == SmoothMethod::Rbf) {
     json["neighbors"] = params.neighbors;

@@ -30,9 +30,12 @@ struct EnhanceParams {
   /// A face's centroid may not move farther than this from the reference (relative to the
   /// reference's bounding-box diagonal) unless it already was. Unset: the input's own Hausdorff
   /// distance from the reference (sampled as the quality report does, rounded up to two digits),
-  /// so that the enhancement is no less faithful than its input, at most 2e-3; 2e-3 when the
+  /// so that the enhancement is no less faithful than its input, at most kLargestAutoDeviation, and that when the
   /// input lies on its reference (no reference given, or the mesh itself).
   std::optional<double> max_deviation;
+  /// The automatic bound's largest value, and its value on the reference: the bound the statistic's
+  /// constants were tuned with (enhance_defaults.h).
+  static constexpr double kLargestAutoDeviation = 2e-3;
   double target_min_angle_deg = 20;     ///< faces under this smallest angle are always in the tail
   double feature_angle_deg = 45;        ///< an edge with a larger dihedral angle is a crease; 180 = none
   bool flips = true;

@@ -16,6 +16,9 @@ namespace meshprep {
 /// nor "p" followed by a number in [0, 100].
 bool apply_variation_rule(const std::string& text, PartitionOfUnityParams& params);
 
+/// The rule `params` holds, as apply_variation_rule reads it: "p90" or "0.3".
+std::string variation_rule_text(const PartitionOfUnityParams& params);
+
 /// The message for a rejected rule: what is expected and what was given.
 std::string variation_rule_error(const std::string& text);
 

@@ -1,0 +1,43 @@
+#include "meshprep/fem/fem_parameters.h"
+
+#include <limits>
+
+namespace meshprep {
+
+const TetParameters& tet_parameters() {
+  static const TetParameters parameters{
+      // TetGen's refinement need not end below 1; check_tet_params refuses (0, 1).
+      {"radius_edge", "--radius-edge", "TetGen -q bound on circumradius / shortest edge; 0 = no refinement", {0, 100}},
+      {"min_dihedral_deg", "--min-dihedral", "TetGen -q target for the smallest dihedral angle (degrees); 0 = TetGen's default",
+       {0, 30}},
+      {"max_volume_relative", "--max-volume-relative", "largest tet volume / enclosed volume; 0 = no bound", {0, 1}},
+      {"keep_surface", "--keep-surface", "the boundary keeps exactly the surface triangles (TetGen -Y)", {}}};
+  return parameters;
+}
+
+const ImproveParameters& improve_parameters() {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // The regular tet's dihedral angle is 70.5 degrees: a goal must leave room on either side of 60.
+  static const ImproveParameters parameters{
+      {"goal_min_dihedral_deg", "--goal-min-dihedral", "the tets with a smaller dihedral angle (degrees) are improved",
+       {0, 60, true, true}},
+      {"goal_max_dihedral_deg", "--goal-max-dihedral", "... and those with a larger one (degrees)", {60, 180, true, true}},
+      {"insertion", "--insertion", "insert inner vertices where flips and smoothing are stuck", {}},
+      {"max_passes", "--max-passes", "passes over the tets below the goal, at most", {1, 1000}},
+      {"time_limit_seconds", "--improve-time-limit",
+       "stop improving after this many seconds (the tets so far are kept); 0 = no limit", {0, inf, false, true}}};
+  return parameters;
+}
+
+const VerdictParameters& verdict_parameters() {
+  static const VerdictParameters parameters{
+      {"min_dihedral_deg", "--min-dihedral-threshold",
+       "FEM-ready only if the tets' smallest dihedral angle is at least this (degrees); 0 = any", {0, 180}},
+      {"max_dihedral_deg", "--max-dihedral-threshold",
+       "FEM-ready only if the tets' largest dihedral angle is at most this (degrees); 180 = any", {0, 180}},
+      {"max_inverted_tets", "--max-inverted-tets",
+       "FEM-ready only if at most this many tets are inverted or flat (volume <= 0)", {0, 1000000000}}};
+  return parameters;
+}
+
+}  // namespace meshprep

@@ -1,0 +1,16 @@
+#pragma once
+/// \file enhance_parameters.h
+/// EnhanceParams' user-facing fields as the command line and the configuration file name them
+/// (core/parameter.h): their keys, flags, ranges and meanings. The defaults are EnhanceParams'.
+
+#include "meshprep/core/parameter.h"
+
+namespace meshprep {
+
+struct EnhanceParameters {
+  ParameterInfo iterations, max_deviation, target_min_angle_deg, feature_angle_deg, flips;
+};
+
+const EnhanceParameters& enhance_parameters();
+
+}  // namespace meshprep

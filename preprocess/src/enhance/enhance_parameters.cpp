@@ -1,0 +1,26 @@
+#include "meshprep/preprocess/enhance/enhance_parameters.h"
+
+#include "meshprep/preprocess/enhance/enhance.h"
+
+namespace meshprep {
+
+const EnhanceParameters& enhance_parameters() {
+  static const std::string largest = parameter_text(EnhanceParams::kLargestAutoDeviation);
+  static const EnhanceParameters parameters{
+      {"iterations", "--iterations", "rounds at most (statistic, flips, Ceres solve, projection)", {1, 1000}},
+      {"max_deviation", "--max-deviation",
+       "a face may not move farther than this fraction of the bounding-box diagonal from the reference (unless it "
+       "already was); auto: as far as the input already is from the reference (the enhancement is no less faithful "
+       "than its input), at most " + largest + ", and " + largest + " when it lies on it",
+       {0, 1, true, false}},
+      // Every triangle has an angle of at most 60 degrees: a target of 60 would put all in the tail.
+      {"target_min_angle_deg", "--target-min-angle",
+       "faces with a smaller angle (degrees) are always in the statistic's bad tail", {0, 60, true, true}},
+      {"feature_angle_deg", "--feature-angle",
+       "edges with a larger dihedral angle (degrees) are creases: their vertices slide only along them; 180 = none",
+       {0, 180, true, false}},
+      {"flips", "--flips,!--no-flips", "flip edges where moving vertices cannot help", {}}};
+  return parameters;
+}
+
+}  // namespace meshprep
