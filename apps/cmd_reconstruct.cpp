@@ -13,9 +13,7 @@
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
 #include "meshprep/preprocess/reconstruct/reconstruct_parameters.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
-#include "meshprep/quality/json_values.h"
 
-#include <chrono>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -45,12 +43,10 @@ int run_reconstruct(const ReconstructOptions& o) {
   params.rows = o.resolution[1];
   ProgressBar bar("reconstruct");
   const AdaptiveReconstructParams adaptive{params, stoppable([&bar](double fraction) { bar.update(fraction); })};
-  const auto start = std::chrono::steady_clock::now();
   const ReconstructResult result = run_stage_on(o.input, [&] {
     return o.adaptive ? reconstruct_adaptive(input.points, adaptive) : reconstruct_surface(input.points, params);
   });
   bar.finish();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.mesh.triangles.empty())
     throw WorkFailed(o.input + ": every triangle is farther than --max-gap " + std::to_string(result.max_gap) +
                      " from the samples; nothing written");
@@ -62,32 +58,18 @@ int run_reconstruct(const ReconstructOptions& o) {
   json["input"] = o.input;
   json["output"] = o.output;
   json["points"] = input.points.size();
-  json["vertices"] = result.mesh.points.size();
-  json["faces"] = result.mesh.triangles.size();
-  json["grid"] = {{"columns", result.columns}, {"rows", result.rows}};
-  json["adaptive"] = o.adaptive;
-  json["patches"] = result.patches;
-  json["leaf_size"] = params.fit.leaf_size;
-  json["neighbors"] = params.fit.neighbors;
-  json["variation"] = {{"rule", variation_rule_text(params.fit)},
-                       {"threshold", result.variation_threshold},
-                       {"growth", params.fit.variation_growth},
-                       {"grown_patches", result.grown_patches},
-                       {"patch_sigma", json_distribution(summarize(result.patch_variation))},
-                       {"vertex_sigma", json_distribution(summarize(result.vertex_variation))}};
-  json["max_gap"] = result.max_gap;
-  json["gap_faces_left_out"] = result.gap_triangles;
-  json["fill_holes"] = params.fill_holes;
-  json["filled_faces"] = result.filled_triangles;
-  json["reference_normal"] = {result.normal.x(), result.normal.y(), result.normal.z()};
-  json["time_seconds"] = seconds;
+  const nlohmann::ordered_json record = to_json(result, params);
+  for (const auto& [key, value] : record.items()) {
+    json[key] = value;
+    if (key == "grid") json["adaptive"] = o.adaptive;  // which of the two functions ran
+  }
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
     std::cout << o.input << " -> " << o.output << ": " << input.points.size() << " points, "
               << result.mesh.points.size() << " vertices, " << result.mesh.triangles.size() << " faces ("
               << result.gap_triangles << " left out over gaps wider than " << result.max_gap;
     if (params.fill_holes) std::cout << "; " << result.filled_triangles << " kept over holes in the data, flagged";
-    std::cout << ") in " << seconds << " s\n";
+    std::cout << ") in " << result.seconds << " s\n";
   }
   return kSuccess;
 }

@@ -3,9 +3,12 @@
 #include "meshprep/core/finite_points.h"
 #include "meshprep/preprocess/simplify/simplify.h"
 
+#include <chrono>
+
 namespace meshprep {
 
 ReconstructResult reconstruct_adaptive(const std::vector<Vec3>& points, const AdaptiveReconstructParams& params) {
+  const auto start = std::chrono::steady_clock::now();
   const PartitionOfUnity pu = fit_surface(points, params.reconstruct);
   ReconstructResult result = mesh_surface(pu, params.reconstruct, 2);
   TriMesh mesh = mesh_from_soup(result.mesh);  // manifold by construction (bow ties dropped)
@@ -21,6 +24,7 @@ ReconstructResult reconstruct_adaptive(const std::vector<Vec3>& points, const Ad
   }
   result.filled_faces.clear();
   require_finite_points(result.mesh.points, "reconstruct");
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

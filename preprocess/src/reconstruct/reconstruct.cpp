@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <initializer_list>
 #include <numeric>
@@ -234,7 +235,10 @@ ReconstructResult mesh_surface(const PartitionOfUnity& pu, const ReconstructPara
 }
 
 ReconstructResult reconstruct_surface(const std::vector<Vec3>& points, const ReconstructParams& params) {
-  return mesh_surface(fit_surface(points, params), params);
+  const auto start = std::chrono::steady_clock::now();
+  ReconstructResult result = mesh_surface(fit_surface(points, params), params);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
 }
 
 }  // namespace meshprep

@@ -9,6 +9,8 @@
 #include "meshprep/core/mesh.h"
 #include "meshprep/preprocess/reconstruct/partition_of_unity.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <vector>
 
@@ -43,6 +45,7 @@ struct ReconstructResult {
   std::size_t grown_patches = 0;  ///< patches whose support grew (sigma above the threshold)
   std::vector<double> patch_variation;   ///< sigma of each patch
   std::vector<double> vertex_variation;  ///< sigma at each mesh vertex (the patches' sigma, blended)
+  double seconds = 0;                    ///< the whole call (the fit and the grid)
 };
 
 /// \throws InvalidInput as PartitionOfUnity, if --vertices is given for points on a line, or if the grid has fewer than 2 x 2 vertices or more
@@ -58,5 +61,11 @@ PartitionOfUnity fit_surface(const std::vector<Vec3>& points, const ReconstructP
 /// axis than params say (columns and rows in the result are those of the grid params say).
 /// \throws InvalidInput as reconstruct_surface does for the grid.
 ReconstructResult mesh_surface(const PartitionOfUnity& fit, const ReconstructParams& params, std::size_t refinement = 1);
+
+/// The run as `meshprep reconstruct --json` writes it, in this order: vertices, faces, grid
+/// {columns, rows}, patches, leaf_size, neighbors, variation {rule, threshold, growth,
+/// grown_patches, patch_sigma, vertex_sigma}, max_gap, gap_faces_left_out, fill_holes,
+/// filled_faces, reference_normal, time_seconds.
+nlohmann::ordered_json to_json(const ReconstructResult& result, const ReconstructParams& params);
 
 }  // namespace meshprep
