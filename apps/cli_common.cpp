@@ -181,9 +181,9 @@ void refuse_new_intersections(const QualityReport& output, std::size_t input_int
               << " face pairs (the input at " << input_intersections << "): tets need a surface that does not\n";
     return;
   }
-  if (output.self_intersections <= input_intersections) return;
-  throw WorkFailed(path + ": the " + what + " surface intersects itself at " +
-                   std::to_string(output.self_intersections - input_intersections) +
+  const std::size_t new_pairs = new_self_intersections(output, input_intersections);
+  if (new_pairs == 0) return;
+  throw WorkFailed(path + ": the " + what + " surface intersects itself at " + std::to_string(new_pairs) +
                    " more face pairs than the input (first: faces " +
                    std::to_string(output.self_intersecting_pairs.front().first) + " and " +
                    std::to_string(output.self_intersecting_pairs.front().second) + "); nothing written. " + advice);

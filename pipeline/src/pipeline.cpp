@@ -134,9 +134,9 @@ class Run {
   void measure(StageRecord& record) {
     const QualityReport report = analyze_quality(MeshSoupView(mesh_), stage_params_, &result_.input_surface);
     fill_shape(record, report);
-    if (report.self_intersections > input_self_intersections_)
+    if (const std::size_t new_pairs = new_self_intersections(report, input_self_intersections_))
       throw PipelineFailed(result_.input + ": " + record.name + " made the surface intersect itself at " +
-                           std::to_string(report.self_intersections - input_self_intersections_) +
+                           std::to_string(new_pairs) +
                            " more face pairs than the input; switch the stage off or change its settings");
   }
 

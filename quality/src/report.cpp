@@ -133,4 +133,8 @@ QualityReport analyze_quality(const SoupView& soup, const QualityParams& params,
   return r;
 }
 
+std::size_t new_self_intersections(const QualityReport& output, std::size_t input_pairs) {
+  return output.self_intersections > input_pairs ? output.self_intersections - input_pairs : 0;
+}
+
 }  // namespace meshprep

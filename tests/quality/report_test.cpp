@@ -94,3 +94,14 @@ TEST(QualityReport, VolumeChangeAgainstAScaledCube) {
   ASSERT_TRUE(r.reference->volume_change_percent.has_value());
   EXPECT_NEAR(*r.reference->volume_change_percent, (1.331 - 1.0) * 100.0, 1e-9);
 }
+
+// The stages' guarantee counts only the pairs beyond the input's own.
+TEST(QualityReport, NewSelfIntersectionsAreThoseBeyondTheInputs) {
+  QualityReport output;
+  output.self_intersections = 5;
+  EXPECT_EQ(new_self_intersections(output, 3), 2u);
+  EXPECT_EQ(new_self_intersections(output, 5), 0u);
+  EXPECT_EQ(new_self_intersections(output, 8), 0u);  // fewer than the input: none new
+  output.self_intersections = 0;
+  EXPECT_EQ(new_self_intersections(output, 0), 0u);
+}

@@ -92,4 +92,9 @@ struct QualityReport {
 QualityReport analyze_quality(const SoupView& soup, const QualityParams& params = {},
                               const TriangleSoup* reference = nullptr);
 
+/// The face pairs by which a stage's `output` intersects itself beyond the `input_pairs` of its
+/// input: what every surface stage guarantees to be 0 (the commands then write nothing, the
+/// pipeline stops). An input's own intersections are not the stage's to remove.
+std::size_t new_self_intersections(const QualityReport& output, std::size_t input_pairs);
+
 }  // namespace meshprep
