@@ -9,7 +9,7 @@ bin=$1
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/cli_harness.sh"
 
-python3 "$here/cli_meshes.py" cube open_box two_boxes duplicate fin sliver
+python3 "$here/cli_meshes.py" cube open_box two_boxes duplicate fin sliver split_cube
 
 # TetGen alone (-pq1.414a0.01, --no-improve) leaves an 8.9-degree sliver in the cube: written, but
 # not FEM-ready.
@@ -104,7 +104,7 @@ head -2 cube22.msh | grep -q "^2.2" && ok || bad "mfem wants msh 2.2"
 "$bin" tetrahedralize cube.off -o cube.msh --max-volume 1 --max-volume-relative 0.1 > /dev/null 2> err.txt
 expect_exit "exclusive volume bounds" 2 $?
 
-for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_faces fin:manifold; do
+for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_faces fin:manifold split_cube:welded; do
   name=${case%%:*} check=${case#*:}
   rm -f out.json
   "$bin" tetrahedralize $name.off -o $name.msh --diagnose $name-bad.off --json out.json > /dev/null 2> err.txt
@@ -116,6 +116,11 @@ for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_fac
 import json; j = json.load(open('out.json')); assert not j['readiness']['ready']
 assert any(p['check'] == '$check' and p['faces'] for p in j['readiness']['problems']), j" && ok || bad "$name json"
 done
+
+# Split vertices are the one problem named: the welded cube is closed and does not cross itself.
+"$bin" tetrahedralize split_cube.off -o split_cube.msh > /dev/null 2> err.txt
+grep -q "not FEM-ready: welded: 28 vertices lie exactly on another vertex" err.txt &&
+  ! grep -qE "closed|self_intersections" err.txt && ok || bad "split_cube: welding is not the one diagnosis"
 
 # Real TetGen output in every format, read back by meshio and gmsh with the counts and the volume.
 mkdir -p formats

@@ -7,6 +7,7 @@ Usage: cli_meshes.py NAME...   (NAME.off is written for each)
   two_boxes  two interpenetrating cubes (self-intersections)
   duplicate  the cube with one face twice
   fin        the cube with a fin on an edge (a non-manifold edge)
+  split_cube the cube with every face corner its own vertex (as VTK's normals filter writes it)
   terrain    an 8 x 8 grid on z = 0.3 sin(x) cos(y) (an open height field, one boundary loop)
   holed      a 4 x 4 grid without its middle 2 x 2 cells (two boundary loops)
   sliver     a closed tet of 4 triangles whose smallest dihedral angle is 2.005 degrees (largest
@@ -39,6 +40,7 @@ def meshes():
         "two_boxes": (P + Q, T + [tuple(i + 8 for i in t) for t in T]),
         "duplicate": (P, T + [T[3]]),
         "fin": (P + [(0.5, 0.5, -1.0)], T + [(0, 1, 8)]),
+        "split_cube": ([P[i] for t in T for i in t], [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(len(T))]),
         "terrain": grid(8, lambda i, j: 0.3 * math.sin(i) * math.cos(j)),
         "holed": grid(4, lambda i, j: 0.0, skip={(1, 1), (2, 1), (1, 2), (2, 2)}),
         "sliver": ([(0.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0175), (1.0, 0.0, 0.0175)],

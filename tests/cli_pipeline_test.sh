@@ -206,7 +206,10 @@ expect_exit "--ratio with --target-faces" 2 $?
 [ ! -e x ] && ok || bad "a folder was made on bad usage"
 
 # ---- the work cannot be done: exit 1 with the reason, nothing written -------------------------
-python3 "$here/cli_meshes.py" two_boxes holed
+python3 "$here/cli_meshes.py" two_boxes holed split_cube
+"$bin" pipeline split_cube.off -o out_split > /dev/null 2> err.txt; expect_exit "split vertices" 1 $?
+one_line "split vertices" "split_cube.off: not FEM-ready: 28 vertices lie exactly on another vertex"
+[ -z "$(ls -A out_split 2>/dev/null)" ] && ok || bad "files written for a surface with split vertices"
 "$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 1 $?
 one_line "self-intersecting input" "two_boxes.off: not FEM-ready: the surface intersects itself"
 [ -z "$(ls -A out_boxes 2>/dev/null)" ] && ok || bad "files written for a self-intersecting input"

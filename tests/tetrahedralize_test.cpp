@@ -168,6 +168,37 @@ TEST(Readiness, NonManifoldEdgeAndDuplicateFaces) {
   EXPECT_TRUE(duplicate_named);
 }
 
+// Every face corner its own vertex, as VTK writes a surface after its normals filter.
+TriangleSoup split_vertices(const TriangleSoup& soup) {
+  TriangleSoup split;
+  for (const Triangle& t : soup.triangles) {
+    Triangle own;
+    for (int k = 0; k < 3; ++k) {
+      own[k] = static_cast<std::uint32_t>(split.points.size());
+      split.points.push_back(soup.points[t[k]]);
+    }
+    split.triangles.push_back(own);
+  }
+  return split;
+}
+
+TEST(Readiness, SplitVerticesAreOneProblemAndTheRestIsCheckedWelded) {
+  const TriangleSoup cube = test::cube();
+  const Readiness r = check_fem_readiness(split_vertices(cube));
+  ASSERT_EQ(r.problems.size(), 1u) << r.problems[1].what;  // not "open" nor "intersecting"
+  EXPECT_EQ(r.problems[0].check, "welded");
+  EXPECT_EQ(r.problems[0].count, 3 * cube.triangles.size() - cube.points.size());
+  EXPECT_EQ(r.problems[0].faces.size(), cube.triangles.size());
+  EXPECT_EQ(r.isolated_vertices, 0u);
+
+  // Real intersections are still counted, as on the welded surface.
+  const TriangleSoup boxes = test::merged(cube, test::translated(cube, {0.5, 0.25, 0.3}));
+  const Readiness welded = check_fem_readiness(boxes), split = check_fem_readiness(split_vertices(boxes));
+  ASSERT_EQ(split.problems.size(), welded.problems.size() + 1);
+  EXPECT_EQ(split.problems.back().check, "self_intersections");
+  EXPECT_EQ(split.problems.back().count, welded.problems.back().count);
+}
+
 TEST(Readiness, InwardOrientationIsFlippedNotRefused) {
   TriangleSoup s = test::cube();
   for (auto& t : s.triangles) std::swap(t[1], t[2]);

@@ -1,5 +1,6 @@
 #include "meshprep/fem/readiness.h"
 
+#include "meshprep/quality/coincident_vertices.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/topology.h"
 #include "meshprep/quality/triangle_metrics.h"
@@ -33,8 +34,18 @@ std::vector<std::size_t> concat(std::vector<std::size_t> a, const std::vector<st
 
 }  // namespace
 
-Readiness check_fem_readiness(const TriangleSoup& surface) {
+Readiness check_fem_readiness(const TriangleSoup& input) {
   Readiness r;
+  // Split vertices first: they open every edge along them and make touching faces count as
+  // intersecting, so the other checks look at the welded surface and describe its shape.
+  const CoincidentVertices welding = find_coincident_vertices(input);
+  const TriangleSoup& surface = welding.merged > 0 ? welding.welded : input;
+  add(r, "welded", welding.merged,
+      count_of(welding.merged, "vertex lies", "vertices lie") +
+          " exactly on another vertex: the faces around them are not connected (the file splits its vertices, "
+          "as VTK's normals filter writes them)",
+      "weld coincident vertices (MeshLab: Merge Close Vertices); the checks below describe the welded surface",
+      welding.faces);
   const Topology topo = analyze_topology(surface);
   add(r, "closed", topo.border_edges,
       count_of(topo.border_edges, "border edge", "border edges") + " in " +
@@ -82,7 +93,7 @@ Readiness check_fem_readiness(const TriangleSoup& surface) {
       "the surface passes through itself; fix the listed faces (open the --diagnose mesh next to the input)",
       si_faces);
   if (topo.closed && topo.oriented) r.inward_oriented = signed_volume(surface) < 0;
-  r.isolated_vertices = topo.isolated_vertices;
+  r.isolated_vertices = topo.isolated_vertices - welding.merged;  // merged away: not isolated in the input
   return r;
 }
 

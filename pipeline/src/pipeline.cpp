@@ -11,6 +11,7 @@
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
 #include "meshprep/preprocess/simplify/simplify.h"
 #include "meshprep/preprocess/smooth/smooth.h"
+#include "meshprep/quality/coincident_vertices.h"
 #include "meshprep/quality/triangle_metrics.h"
 
 #include <chrono>
@@ -205,9 +206,16 @@ class Run {
                   std::to_string(report.self_intersections) + " self-intersecting face pairs";
     finish(std::move(record));
     if (!config_.tetrahedralize.enabled) return;
-    // What no later stage can mend is refused before any work is done. Simplification may remove
-    // crossings (its collapses merge the crossing faces); if it runs, the final surface's
-    // readiness check judges what is left.
+    // What no later stage can mend is refused before any work is done. Split vertices first: they
+    // open every seam and make touching faces count as crossings, so the figures would mislead.
+    if (report.self_intersections > 0 || !report.closed)
+      if (const std::size_t merged = find_coincident_vertices(result_.input_surface).merged)
+        throw PipelineFailed(result_.input + ": not FEM-ready: " + std::to_string(merged) +
+                             " vertices lie exactly on another vertex: the file splits its vertices (as VTK's normals "
+                             "filter writes them), so its faces are not connected; weld them first (MeshLab: Merge "
+                             "Close Vertices)");
+    // Simplification may remove crossings (its collapses merge the crossing faces); if it runs,
+    // the final surface's readiness check judges what is left.
     if (report.self_intersections > 0 && !simplifies())
       throw PipelineFailed(result_.input + ": not FEM-ready: the surface intersects itself at " +
                            std::to_string(report.self_intersections) +

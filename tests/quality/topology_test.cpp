@@ -1,3 +1,4 @@
+#include "meshprep/quality/coincident_vertices.h"
 #include "meshprep/quality/topology.h"
 
 #include "test_meshes.h"
@@ -110,4 +111,26 @@ TEST(Topology, IsolatedVerticesAreNotCounted) {
   EXPECT_EQ(t.isolated_vertices, 1u);
   EXPECT_EQ(t.referenced_vertices, 4u);
   EXPECT_EQ(t.euler_characteristic, 2);
+}
+
+// A seam of split vertices is found and welded; two closed bodies touching at corners are not a seam.
+TEST(CoincidentVertices, SplitSeamsAreFoundTouchingBodiesAreNot) {
+  const TriangleSoup cube = test::cube();
+  TriangleSoup split;
+  for (const Triangle& t : cube.triangles) {
+    const auto first = static_cast<std::uint32_t>(split.points.size());
+    for (const std::uint32_t v : t) split.points.push_back(cube.points[v]);
+    split.triangles.push_back({first, first + 1, first + 2});
+  }
+  const CoincidentVertices found = find_coincident_vertices(split);
+  EXPECT_EQ(found.merged, 3 * cube.triangles.size() - cube.points.size());
+  EXPECT_EQ(found.faces.size(), cube.triangles.size());
+  const Topology welded = analyze_topology(found.welded);
+  EXPECT_TRUE(welded.closed);
+  EXPECT_TRUE(welded.manifold);
+
+  EXPECT_EQ(find_coincident_vertices(cube).merged, 0u);
+  const TriangleSoup touching = test::merged(cube, test::translated(cube, {1, 0, 0}));  // share a face's corners
+  EXPECT_EQ(find_coincident_vertices(touching).merged, 0u);
+  EXPECT_TRUE(find_coincident_vertices(touching).welded.triangles.empty());
 }

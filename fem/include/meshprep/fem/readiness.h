@@ -15,7 +15,8 @@
 namespace meshprep {
 
 struct ReadinessProblem {
-  std::string check;   ///< "closed", "manifold", "oriented", "degenerate_faces", "duplicate_faces", "self_intersections"
+  /// "welded", "closed", "manifold", "oriented", "degenerate_faces", "duplicate_faces", "self_intersections"
+  std::string check;
   std::size_t count = 0;  ///< how many edges/vertices/faces/pairs
   std::string what;    ///< one line: the problem in words with the count
   std::string hint;    ///< what to do about it
@@ -29,7 +30,8 @@ struct Readiness {
   std::size_t isolated_vertices = 0;  ///< points no face uses (not a problem: plc_from_surface leaves them out)
 };
 
-/// Check `surface` for tetrahedralisation.
+/// Check `surface` for tetrahedralisation. Vertices at exactly the same place (a file that splits
+/// its vertices) are one problem, "welded"; the other checks then describe the welded surface.
 Readiness check_fem_readiness(const TriangleSoup& surface);
 
 /// The offending faces of every problem as a small soup (their vertices renumbered), to open
