@@ -121,6 +121,19 @@ done
 "$bin" tetrahedralize split_cube.off -o split_cube.msh > /dev/null 2> err.txt
 grep -q "not FEM-ready: welded: 28 vertices lie exactly on another vertex" err.txt &&
   ! grep -qE "closed|self_intersections" err.txt && ok || bad "split_cube: welding is not the one diagnosis"
+# meshprep repair welds it into the closed cube, which TetGen then takes; what repair cannot mend
+# yet (crossing boxes) is named, exit 1, nothing written.
+"$bin" repair split_cube.off -o split_repaired.off --json repair.json > /dev/null 2> err.txt
+expect_exit "repair split_cube" 0 $?
+python3 -c "
+import json; j = json.load(open('repair.json'))
+assert j['welded_vertices'] == 28 and j['faces'] == 12 and j['vertices'] == 8 and j['readiness']['ready'], j" &&
+  ok || bad "repair split_cube: counts or readiness"
+"$bin" tetrahedralize split_repaired.off -o split_repaired.msh --max-volume 0.01 > /dev/null 2> err.txt
+expect_exit "tets of the repaired cube" 0 $?
+"$bin" repair two_boxes.off -o boxes_repaired.off > /dev/null 2> err.txt; expect_exit "repair crossing boxes" 1 $?
+grep -q "not mended yet: 18 pairs of faces intersect" err.txt && [ ! -e boxes_repaired.off ] &&
+  ok || bad "repair crossing boxes: the message, or a file written"
 
 # Real TetGen output in every format, read back by meshio and gmsh with the counts and the volume.
 mkdir -p formats

@@ -44,7 +44,7 @@ Readiness check_fem_readiness(const TriangleSoup& input) {
       count_of(welding.merged, "vertex lies", "vertices lie") +
           " exactly on another vertex: the faces around them are not connected (the file splits its vertices, "
           "as VTK's normals filter writes them)",
-      "weld coincident vertices (MeshLab: Merge Close Vertices); the checks below describe the welded surface",
+      "weld them (meshprep repair); the other checks describe the welded surface",
       welding.faces);
   const Topology topo = analyze_topology(surface);
   add(r, "closed", topo.border_edges,

@@ -212,8 +212,7 @@ class Run {
       if (const std::size_t merged = find_coincident_vertices(result_.input_surface).merged)
         throw PipelineFailed(result_.input + ": not FEM-ready: " + std::to_string(merged) +
                              " vertices lie exactly on another vertex: the file splits its vertices (as VTK's normals "
-                             "filter writes them), so its faces are not connected; weld them first (MeshLab: Merge "
-                             "Close Vertices)");
+                             "filter writes them), so its faces are not connected; weld them first (meshprep repair)");
     // Simplification may remove crossings (its collapses merge the crossing faces); if it runs,
     // the final surface's readiness check judges what is left.
     if (report.self_intersections > 0 && !simplifies())

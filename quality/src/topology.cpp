@@ -1,6 +1,7 @@
 #include "meshprep/quality/topology.h"
 
-#include "union_find.h"
+#include "meshprep/core/union_find.h"
+
 
 #include <algorithm>
 #include <unordered_set>

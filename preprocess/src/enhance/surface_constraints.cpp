@@ -2,9 +2,10 @@
 
 #include "shared/edge_lengths.h"
 
+#include "meshprep/core/union_find.h"
+
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace meshprep::detail {
 namespace {
@@ -34,16 +35,6 @@ VertexHandle other_end(const TriMesh& mesh, EdgeHandle e, VertexHandle v) {
   const VertexHandle a = mesh.to_vertex_handle(mesh.halfedge_handle(e, 0));
   return a == v ? mesh.to_vertex_handle(mesh.halfedge_handle(e, 1)) : a;
 }
-
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void join(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
 
 // The feature edges of each vertex.
 std::vector<std::vector<EdgeHandle>> incident(const TriMesh& mesh, const std::vector<char>& feature) {
@@ -75,16 +66,17 @@ std::vector<char> creases(const TriMesh& mesh, double cos_feature) {
   UnionFind runs(mesh.n_edges());
   for (const auto v : mesh.vertices()) {
     const auto& edges = edges_of[static_cast<std::size_t>(v.idx())];
-    if (straight_through(mesh, v, edges)) runs.join(static_cast<std::size_t>(edges[0].idx()), static_cast<std::size_t>(edges[1].idx()));
+    if (straight_through(mesh, v, edges))
+      runs.unite(static_cast<std::uint32_t>(edges[0].idx()), static_cast<std::uint32_t>(edges[1].idx()));
   }
   std::vector<double> run_length(mesh.n_edges(), 0);
   for (const auto e : mesh.edges())
-    if (candidate[static_cast<std::size_t>(e.idx())]) run_length[runs.find(static_cast<std::size_t>(e.idx()))] += mesh.calc_edge_length(e);
+    if (candidate[static_cast<std::size_t>(e.idx())]) run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] += mesh.calc_edge_length(e);
   const double shortest = kShortestCrease * median_edge_length(mesh);
   std::vector<char> crease(mesh.n_edges(), 0);
   for (const auto e : mesh.edges())
     crease[static_cast<std::size_t>(e.idx())] =
-        candidate[static_cast<std::size_t>(e.idx())] && run_length[runs.find(static_cast<std::size_t>(e.idx()))] >= shortest;
+        candidate[static_cast<std::size_t>(e.idx())] && run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] >= shortest;
   return crease;
 }
 
@@ -120,12 +112,13 @@ SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& refere
   for (const auto e : mesh.edges()) {
     if (!is_feature(e)) continue;
     const VertexHandle a = mesh.to_vertex_handle(mesh.halfedge_handle(e, 0)), b = mesh.to_vertex_handle(mesh.halfedge_handle(e, 1));
-    if (role(a) == VertexRole::Line && role(b) == VertexRole::Line) lines.join(static_cast<std::size_t>(a.idx()), static_cast<std::size_t>(b.idx()));
+    if (role(a) == VertexRole::Line && role(b) == VertexRole::Line)
+      lines.unite(static_cast<std::uint32_t>(a.idx()), static_cast<std::uint32_t>(b.idx()));
   }
   std::vector<int> line_of_root(mesh.n_vertices(), -1);
   for (const auto v : mesh.vertices()) {
     if (role(v) != VertexRole::Line) continue;
-    int& index = line_of_root[lines.find(static_cast<std::size_t>(v.idx()))];
+    int& index = line_of_root[lines.find(static_cast<std::uint32_t>(v.idx()))];
     if (index < 0) {
       index = static_cast<int>(lines_.size());
       lines_.emplace_back();

@@ -1,6 +1,8 @@
 #pragma once
-// Disjoint-set forest with path halving (private to quality/).
+/// \file union_find.h
+/// Disjoint sets of indices (a forest with path halving); a set's root is its lowest index.
 
+#include <cstddef>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -14,10 +16,13 @@ class UnionFind {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
     return x;
   }
-  void unite(std::uint32_t a, std::uint32_t b) {
+  /// Joins the sets of a and b; false if they were one already.
+  bool unite(std::uint32_t a, std::uint32_t b) {
     a = find(a);
     b = find(b);
-    if (a != b) parent_[a < b ? b : a] = a < b ? a : b;
+    if (a == b) return false;
+    parent_[a < b ? b : a] = a < b ? a : b;
+    return true;
   }
 
  private:

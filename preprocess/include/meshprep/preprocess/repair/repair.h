@@ -1,0 +1,47 @@
+#pragma once
+/// \file repair.h
+/// The repair stage, first steps (issue 33): a dirty surface's connectivity mended without moving
+/// the surface. In order:
+/// 1. weld: vertices closer than weld_tolerance x the median edge length become one (the lowest
+///    index of each cluster, where it is: welding never moves a vertex);
+/// 2. faces that name a vertex twice after welding, and faces repeating another's three vertices,
+///    are removed; vertices no face uses are dropped;
+/// 3. orientation: each edge-connected component is made consistent from its first face, across
+///    its manifold edges, and a closed component enclosing negative volume is turned outward.
+/// Holes, non-manifold edges and self-intersections are not mended yet: the caller checks the
+/// result (fem's check_fem_readiness) and refuses what is left.
+
+#include "meshprep/core/mesh.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <cstddef>
+
+namespace meshprep {
+
+struct RepairParams {
+  /// Vertices closer than this fraction of the median edge length are welded. A file that splits
+  /// its vertices writes each copy with the same digits, so exact copies dominate; the margin
+  /// takes exporters that round differently per copy, and stays far below any real edge.
+  double weld_tolerance = 1e-3;
+};
+
+struct RepairResult {
+  double weld_distance = 0;             ///< the welding distance used, in the surface's units
+  std::size_t welded_vertices = 0;      ///< vertices merged into another
+  std::size_t degenerate_faces = 0;     ///< removed: a vertex twice after welding
+  std::size_t duplicate_faces = 0;      ///< removed: another face's three vertices
+  std::size_t unused_vertices = 0;      ///< dropped: no face uses them
+  std::size_t flipped_faces = 0;        ///< turned to agree with their component's first face
+  std::size_t inverted_components = 0;  ///< closed components turned outward (every face flipped)
+  std::size_t components = 0;           ///< edge-connected components
+  double seconds = 0;
+};
+
+/// Repair `surface` in place (steps above).
+RepairResult repair(TriangleSoup& surface, const RepairParams& params = {});
+
+/// The run as `meshprep repair --json` writes it: the fields above by name, time_seconds last.
+nlohmann::ordered_json to_json(const RepairResult& result);
+
+}  // namespace meshprep

@@ -1,0 +1,105 @@
+#include "repair/orient_components.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <queue>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace meshprep::detail {
+namespace {
+
+// One face's use of an edge: the edge's sorted ends, the face, and whether the face runs lo -> hi.
+struct EdgeUse {
+  std::uint32_t lo, hi;
+  std::uint32_t face;
+  bool forward;
+};
+
+std::vector<EdgeUse> edge_uses(const TriangleSoup& soup) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * soup.triangles.size());
+  for (std::uint32_t f = 0; f < soup.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = soup.triangles[f][k], b = soup.triangles[f][(k + 1) % 3];
+      uses.push_back({std::min(a, b), std::max(a, b), f, a < b});
+    }
+  std::sort(uses.begin(), uses.end(),
+            [](const EdgeUse& x, const EdgeUse& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
+  return uses;
+}
+
+void flip(Triangle& t) { std::swap(t[1], t[2]); }
+
+// Six times the signed volume the faces enclose (the divergence theorem over their cones from 0).
+double six_volume(const TriangleSoup& soup, const std::vector<std::uint32_t>& faces) {
+  double sum = 0;
+  for (const std::uint32_t f : faces) {
+    const Triangle& t = soup.triangles[f];
+    sum += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
+  }
+  return sum;
+}
+
+}  // namespace
+
+OrientCounts orient_components(TriangleSoup& soup) {
+  OrientCounts counts;
+  const std::vector<EdgeUse> uses = edge_uses(soup);
+  // For each face, its manifold edges' other face and whether the two ran the edge the same way
+  // in the input; border and non-manifold edges join nothing (and keep a component open).
+  struct Link {
+    std::uint32_t other;
+    bool same_direction;
+  };
+  std::vector<std::vector<Link>> links(soup.triangles.size());
+  std::vector<char> open(soup.triangles.size(), 0);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
+    if (j - i == 2) {
+      const bool same = uses[i].forward == uses[i + 1].forward;
+      links[uses[i].face].push_back({uses[i + 1].face, same});
+      links[uses[i + 1].face].push_back({uses[i].face, same});
+    } else {
+      for (std::size_t k = i; k < j; ++k) open[uses[k].face] = 1;
+    }
+    i = j;
+  }
+  std::vector<char> flipped(soup.triangles.size(), 0), reached(soup.triangles.size(), 0);
+  for (std::uint32_t seed = 0; seed < soup.triangles.size(); ++seed) {
+    if (reached[seed]) continue;
+    ++counts.components;
+    std::vector<std::uint32_t> component{seed};
+    bool closed = true;
+    reached[seed] = 1;
+    std::queue<std::uint32_t> queue;
+    queue.push(seed);
+    while (!queue.empty()) {
+      const std::uint32_t f = queue.front();
+      queue.pop();
+      closed = closed && !open[f];
+      for (const Link& link : links[f]) {
+        if (reached[link.other]) continue;
+        reached[link.other] = 1;
+        // Agreeing faces run a shared edge in opposite directions.
+        flipped[link.other] = static_cast<char>(flipped[f] ^ link.same_direction);
+        component.push_back(link.other);
+        queue.push(link.other);
+      }
+    }
+    for (const std::uint32_t f : component)
+      if (flipped[f]) {
+        flip(soup.triangles[f]);
+        ++counts.flipped_faces;
+      }
+    if (closed && six_volume(soup, component) < 0) {
+      for (const std::uint32_t f : component) flip(soup.triangles[f]);
+      ++counts.inverted_components;
+    }
+  }
+  return counts;
+}
+
+}  // namespace meshprep::detail

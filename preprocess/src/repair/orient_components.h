@@ -1,0 +1,19 @@
+#pragma once
+// Repair step 3 (repair.h): consistent orientation per component, closed components outward.
+
+#include "meshprep/core/mesh.h"
+
+#include <cstddef>
+
+namespace meshprep::detail {
+
+struct OrientCounts {
+  std::size_t components = 0, flipped_faces = 0, inverted_components = 0;
+};
+
+/// Flips faces so that the two faces of each manifold edge traverse it in opposite directions,
+/// spreading from each edge-connected component's first face (a non-orientable component keeps
+/// what cannot agree), then turns every closed component that encloses negative volume outward.
+OrientCounts orient_components(TriangleSoup& soup);
+
+}  // namespace meshprep::detail

@@ -1,0 +1,32 @@
+#include "meshprep/preprocess/repair/repair.h"
+
+#include "repair/orient_components.h"
+#include "repair/weld_vertices.h"
+
+#include "meshprep/core/errors.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace meshprep {
+
+RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
+  if (!(params.weld_tolerance >= 0 && std::isfinite(params.weld_tolerance)))
+    throw InvalidInput("repair: the weld tolerance must be a finite number >= 0");
+  const auto start = std::chrono::steady_clock::now();
+  RepairResult result;
+  result.weld_distance = params.weld_tolerance * detail::median_edge_length(surface);
+  const detail::WeldCounts weld = detail::weld_vertices(surface, result.weld_distance);
+  result.welded_vertices = weld.welded_vertices;
+  result.degenerate_faces = weld.degenerate_faces;
+  result.duplicate_faces = weld.duplicate_faces;
+  result.unused_vertices = weld.unused_vertices;
+  const detail::OrientCounts orient = detail::orient_components(surface);
+  result.components = orient.components;
+  result.flipped_faces = orient.flipped_faces;
+  result.inverted_components = orient.inverted_components;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace meshprep

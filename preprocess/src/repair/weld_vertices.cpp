@@ -1,0 +1,122 @@
+#include "repair/weld_vertices.h"
+
+#include "meshprep/core/union_find.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <tuple>
+#include <unordered_map>
+#include <vector>
+
+namespace meshprep::detail {
+namespace {
+
+struct CellHash {
+  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+    return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
+  }
+};
+
+// Joins every pair of used vertices within `distance`: exact copies through a sort, near ones
+// through a grid of cells `distance` wide (a pair lies in neighbouring cells).
+std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, double distance, UnionFind& clusters) {
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < soup.points.size(); ++v)
+    if (used[v]) order.push_back(v);
+  std::size_t joined = 0;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Vec3 &p = soup.points[a], &q = soup.points[b];
+    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
+  });
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (soup.points[order[i]] == soup.points[order[i - 1]]) joined += clusters.unite(order[i], order[i - 1]);
+  if (!(distance > 0)) return joined;
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>, CellHash> cells;
+  const auto cell_of = [distance](const Vec3& p) {
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / distance)),
+                                       static_cast<std::int64_t>(std::floor(p.y() / distance)),
+                                       static_cast<std::int64_t>(std::floor(p.z() / distance))};
+  };
+  for (const std::uint32_t v : order) cells[cell_of(soup.points[v])].push_back(v);
+  const double squared = distance * distance;
+  for (const std::uint32_t v : order) {
+    const std::array<std::int64_t, 3> c = cell_of(soup.points[v]);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto found = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (found == cells.end()) continue;
+          for (const std::uint32_t w : found->second)
+            if (w > v && (soup.points[w] - soup.points[v]).squaredNorm() <= squared) joined += clusters.unite(v, w);
+        }
+  }
+  return joined;
+}
+
+}  // namespace
+
+double median_edge_length(const TriangleSoup& soup) {
+  std::vector<double> lengths;
+  lengths.reserve(3 * soup.triangles.size());
+  for (const Triangle& t : soup.triangles)
+    for (int k = 0; k < 3; ++k) lengths.push_back((soup.points[t[k]] - soup.points[t[(k + 1) % 3]]).norm());
+  if (lengths.empty()) return 0;
+  const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), middle, lengths.end());
+  return *middle;
+}
+
+WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
+  WeldCounts counts;
+  std::vector<char> used(soup.points.size(), 0);
+  for (const Triangle& t : soup.triangles)
+    for (const std::uint32_t v : t) used[v] = 1;
+  UnionFind clusters(soup.points.size());
+  counts.welded_vertices = join_close(soup, used, distance, clusters);
+
+  std::vector<Triangle> kept;
+  std::vector<std::array<std::uint32_t, 3>> seen;  // each kept face's sorted vertices
+  for (Triangle t : soup.triangles) {
+    for (std::uint32_t& v : t) v = clusters.find(v);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      ++counts.degenerate_faces;
+      continue;
+    }
+    kept.push_back(t);
+  }
+  std::vector<std::size_t> order(kept.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto sorted = [&](std::size_t f) {
+    std::array<std::uint32_t, 3> s{kept[f][0], kept[f][1], kept[f][2]};
+    std::sort(s.begin(), s.end());
+    return s;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sorted(a) < sorted(b); });
+  std::vector<char> duplicate(kept.size(), 0);
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (sorted(order[i]) == sorted(order[i - 1])) duplicate[order[i]] = 1;  // the first in the file stays
+  std::vector<Triangle> faces;
+  for (std::size_t f = 0; f < kept.size(); ++f)
+    if (duplicate[f]) ++counts.duplicate_faces;
+    else faces.push_back(kept[f]);
+
+  std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
+  std::vector<Vec3> points;
+  for (Triangle& t : faces)
+    for (std::uint32_t& v : t) {
+      if (renumber[v] == UINT32_MAX) {
+        renumber[v] = static_cast<std::uint32_t>(points.size());
+        points.push_back(soup.points[v]);
+      }
+      v = renumber[v];
+    }
+  counts.unused_vertices = soup.points.size() - points.size() - counts.welded_vertices;
+  soup.points = std::move(points);
+  soup.triangles = std::move(faces);
+  return counts;
+}
+
+}  // namespace meshprep::detail
