@@ -14,11 +14,21 @@
 namespace meshprep::detail {
 namespace {
 
+// Teschner et al.'s spatial hash, in unsigned arithmetic (wraps instead of overflowing).
 struct CellHash {
   std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-    return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
+    const auto u = [](std::int64_t x) { return static_cast<std::uint64_t>(x); };
+    return static_cast<std::size_t>(u(c[0]) * 73856093u ^ u(c[1]) * 19349663u ^ u(c[2]) * 83492791u);
   }
 };
+
+// Cell coordinates are whole numbers of `distance`: beyond 2^53 of them they stop being exact and
+// then overflow an int64, so a distance that small against the coordinates welds exact copies only.
+bool grid_fits(const TriangleSoup& soup, double distance) {
+  double largest = 0;
+  for (const Vec3& p : soup.points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  return largest / distance < 9e15;
+}
 
 // Joins every pair of used vertices within `distance`: exact copies through a sort, near ones
 // through a grid of cells `distance` wide (a pair lies in neighbouring cells).
@@ -33,7 +43,7 @@ std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, 
   });
   for (std::size_t i = 1; i < order.size(); ++i)
     if (soup.points[order[i]] == soup.points[order[i - 1]]) joined += clusters.unite(order[i], order[i - 1]);
-  if (!(distance > 0)) return joined;
+  if (!(distance > 0) || !grid_fits(soup, distance)) return joined;
   std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>, CellHash> cells;
   const auto cell_of = [distance](const Vec3& p) {
     return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / distance)),
