@@ -1,4 +1,4 @@
-// meshprep pipeline IN -o OUTDIR [--config FILE.json] [--target-faces N | --ratio R]
+// meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
 //   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
@@ -35,13 +35,14 @@ struct PipelineOptions {
   double ratio = 0, extrude_base = 0;
   std::size_t target_faces = 0, threads = 0;
   unsigned timeout = 0;
-  bool quiet = false, print_config = false, config_keys = false;
+  bool repair = false, quiet = false, print_config = false, config_keys = false;
 };
 
 // Defaults, then the configuration file, then the command line's own flags.
 PipelineConfig effective_config(const PipelineOptions& o) {
   PipelineConfig config;
   if (!o.config.empty()) read_config_file(o.config, config);
+  if (o.repair) config.repair.enabled = true;
   if (o.ratio > 0) {
     config.simplify.ratio = o.ratio;
     config.simplify.params.target_faces = 0;
@@ -206,6 +207,9 @@ Action add_pipeline_command(CLI::App& app) {
   cmd->add_option("--config", o->config,
                   "Configuration file (JSON, keys in docs/pipeline.md; a pipeline.json replays its run)")
       ->check(CLI::ExistingFile);
+  cmd->add_flag("--repair", o->repair,
+                "Repair the input surface first (meshprep repair: weld split vertices, drop degenerate and duplicate "
+                "faces, orient); off by default");
   const ParameterInfo& keep_ratio = simplify_parameters().keep_ratio;
   auto* ratio =
       cmd->add_option(keep_ratio.flag, o->ratio, "Simplify: " + keep_ratio.help)->check(range_check(keep_ratio.range));

@@ -210,6 +210,13 @@ python3 "$here/cli_meshes.py" two_boxes holed split_cube
 "$bin" pipeline split_cube.off -o out_split > /dev/null 2> err.txt; expect_exit "split vertices" 1 $?
 one_line "split vertices" "split_cube.off: not FEM-ready: 28 vertices lie exactly on another vertex"
 [ -z "$(ls -A out_split 2>/dev/null)" ] && ok || bad "files written for a surface with split vertices"
+# With --repair the same file is welded first (its own row) and goes through to tets.
+"$bin" pipeline split_cube.off -o out_split_repaired --repair --quiet --json split.json > /dev/null 2> err.txt
+expect_exit "split vertices, --repair" 0 $?
+python3 -c "
+import json; j = json.load(open('split.json')); s = j['stages']
+assert [x['name'] for x in s[:2]] == ['repair', 'check'] and s[0]['details']['welded_vertices'] == 28, s[:2]
+assert j['fem_ready'] is True, j['fem_ready']" && ok || bad "--repair: the repair row or the verdict"
 "$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 1 $?
 one_line "self-intersecting input" "two_boxes.off: not FEM-ready: the surface intersects itself"
 [ -z "$(ls -A out_boxes 2>/dev/null)" ] && ok || bad "files written for a self-intersecting input"

@@ -93,9 +93,18 @@ TEST(PipelineConfig, DocsListEveryKey) {
     EXPECT_NE(docs.str().find("`" + doc.key + "`"), std::string::npos) << doc.key << " is not in docs/pipeline.md";
 }
 
+TEST(PipelineConfig, RepairIsOffByDefaultAndReadsItsTolerance) {
+  PipelineConfig c;
+  EXPECT_FALSE(c.repair.enabled);
+  apply_config(Json::parse(R"({"repair": {"enabled": true, "weld_tolerance": 0.01}})"), "c.json", c);
+  EXPECT_TRUE(c.repair.enabled);
+  EXPECT_EQ(c.repair.params.weld_tolerance, 0.01);
+  EXPECT_THROW(apply_config(Json::parse(R"({"repair": {"weld_tolerance": 0.5}})"), "c.json", c), InvalidInput);
+}
+
 TEST(PipelineConfig, UnknownSectionsAndKeysNameTheValidOnes) {
   EXPECT_EQ(error_of(Json::parse(R"({"simplfy": {}})")),
-            "c.json: unknown section 'simplfy'; valid sections: reconstruct, simplify, smooth, enhance, quality, "
+            "c.json: unknown section 'simplfy'; valid sections: repair, reconstruct, simplify, smooth, enhance, quality, "
             "tetrahedralize, improve, verdict");
   const std::string key = error_of(Json::parse(R"({"simplify": {"ratoi": 0.5}})"));
   EXPECT_EQ(key.rfind("c.json: unknown key 'simplify.ratoi'; valid keys of simplify: enabled, ratio, target_faces", 0), 0u)

@@ -9,6 +9,7 @@
 #include "meshprep/preprocess/compose/adaptive_reconstruction.h"
 #include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/repair/repair.h"
 #include "meshprep/preprocess/simplify/simplify.h"
 #include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/quality/coincident_vertices.h"
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace meshprep {
@@ -183,10 +185,31 @@ class Run {
     finish(std::move(record));
   }
 
+  // The input read as a soup and repaired (repair.h); its row comes before the check's.
+  LoadedMesh repaired_input() {
+    StageRecord record = started("repair");
+    LoadedMesh loaded;
+    loaded.soup = read_soup(result_.input, &loaded.read);
+    record.faces_before = loaded.soup.triangles.size();
+    const RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
+    loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
+    record.seconds = r.seconds;
+    fill_shape(record, analyze_quality(loaded.soup, stage_params_));  // the row's figures, as every stage's
+    record.details = picked(to_json(r), {"welded_vertices", "degenerate_faces", "duplicate_faces", "flipped_faces",
+                                         "inverted_components"});
+    record.note = std::to_string(r.welded_vertices) + " vertices welded, " +
+                  std::to_string(r.degenerate_faces + r.duplicate_faces) + " faces removed, " +
+                  std::to_string(r.flipped_faces) + " flipped";
+    finish(std::move(record));
+    return loaded;
+  }
+
   void check_input() {
+    std::optional<LoadedMesh> repaired;
+    if (config_.repair.enabled) repaired = repaired_input();
     StageRecord record = started("check");
     const Clock::time_point start = Clock::now();
-    LoadedMesh loaded = load_mesh(result_.input);
+    LoadedMesh loaded = repaired ? std::move(*repaired) : load_mesh(result_.input);
     require_all_faces(loaded, "the pipeline");
     result_.input_surface = std::move(loaded.soup);
     mesh_ = std::move(loaded.mesh);
@@ -212,7 +235,7 @@ class Run {
       if (const std::size_t merged = find_coincident_vertices(result_.input_surface).merged)
         throw PipelineFailed(result_.input + ": not FEM-ready: " + std::to_string(merged) +
                              " vertices lie exactly on another vertex: the file splits its vertices (as VTK's normals "
-                             "filter writes them), so its faces are not connected; weld them first (meshprep repair)");
+                             "filter writes them), so its faces are not connected; weld them first (--repair)");
     // Simplification may remove crossings (its collapses merge the crossing faces); if it runs,
     // the final surface's readiness check judges what is left.
     if (report.self_intersections > 0 && !simplifies())

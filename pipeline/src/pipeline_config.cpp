@@ -8,6 +8,7 @@
 #include "meshprep/preprocess/enhance/enhance_parameters.h"
 #include "meshprep/preprocess/reconstruct/reconstruct_parameters.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
+#include "meshprep/preprocess/repair/repair_parameters.h"
 #include "meshprep/preprocess/simplify/simplify_parameters.h"
 #include "meshprep/preprocess/smooth/smooth_parameters.h"
 #include "meshprep/quality/quality_parameters.h"
@@ -137,6 +138,13 @@ Key choice(const char* section, const std::string& name, T& field, Choices<T> ch
             const std::string chosen = choice_name(choices, field);
             return chosen.empty() ? OrderedJson(nullptr) : OrderedJson(chosen);
           }};
+}
+
+std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
+  return {flag("repair", "enabled", r.enabled,
+               "weld split vertices, drop degenerate and duplicate faces and orient the input before it is checked "
+               "(meshprep repair)"),
+          number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance)};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {
@@ -289,7 +297,8 @@ std::vector<Key> verdict_keys(TetThresholds& t) {
 }
 
 std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c) {
-  return {{"reconstruct", reconstruct_keys(c.reconstruct)}, {"simplify", simplify_keys(c.simplify)},
+  return {{"repair", repair_keys(c.repair)},           {"reconstruct", reconstruct_keys(c.reconstruct)},
+          {"simplify", simplify_keys(c.simplify)},
           {"smooth", smooth_keys(c.smooth)},                {"enhance", enhance_keys(c.enhance)},
           {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
           {"improve", improve_keys(c.improve)},             {"verdict", verdict_keys(c.verdict)}};

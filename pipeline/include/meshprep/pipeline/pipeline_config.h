@@ -4,7 +4,7 @@
 /// stage libraries' own (reconstruct.h, adaptive_reconstruction.h, simplify.h, smooth.h, enhance.h, report.h,
 /// tetrahedralize.h) except where a field says otherwise; docs/pipeline.md lists every key.
 ///
-/// The file is one JSON object of sections ("reconstruct", "simplify", "smooth", "enhance",
+/// The file is one JSON object of sections ("repair", "reconstruct", "simplify", "smooth", "enhance",
 /// "quality", "tetrahedralize", "improve", "verdict"), each an object of keys; any subset may be given. A section "run"
 /// (what meshprep wrote into pipeline.json about the run: input, versions) is ignored, so a
 /// pipeline.json replays its run. Unknown sections and keys are rejected with the list of valid
@@ -16,6 +16,7 @@
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/repair/repair.h"
 #include "meshprep/preprocess/simplify/simplify.h"
 #include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/quality/report.h"
@@ -29,6 +30,12 @@
 namespace meshprep {
 
 struct PipelineConfig {
+  /// Surface input only: the repair stage (repair.h) before the input is checked. Off by
+  /// default: it changes the user's file (welds, drops faces, flips), so it is asked for.
+  struct Repair {
+    bool enabled = false;
+    RepairParams params;
+  } repair;
   struct Reconstruct {  ///< points input only
     ReconstructParams params = defaults();
     /// Vertices placed by local features (adaptive_reconstruction.h) instead of the uniform grid.
