@@ -185,8 +185,9 @@ class Run {
     finish(std::move(record));
   }
 
-  // The input read as a soup and repaired (repair.h); its row comes before the check's.
-  LoadedMesh repaired_input() {
+  // The input read as a soup and repaired (repair.h); its row comes before the check's, which
+  // takes over `report` (the repaired surface's, measured once for both rows).
+  LoadedMesh repaired_input(QualityReport& report) {
     StageRecord record = started("repair");
     LoadedMesh loaded;
     loaded.soup = read_soup(result_.input, &loaded.read);
@@ -194,7 +195,8 @@ class Run {
     const RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
     loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
     record.seconds = r.seconds;
-    fill_shape(record, analyze_quality(loaded.soup, stage_params_));  // the row's figures, as every stage's
+    report = analyze_quality(loaded.soup, stage_params_);
+    fill_shape(record, report);
     record.details = picked(to_json(r), {"welded_vertices", "degenerate_faces", "duplicate_faces", "flipped_faces",
                                          "inverted_components"});
     record.note = std::to_string(r.welded_vertices) + " vertices welded, " +
@@ -206,7 +208,8 @@ class Run {
 
   void check_input() {
     std::optional<LoadedMesh> repaired;
-    if (config_.repair.enabled) repaired = repaired_input();
+    QualityReport repaired_report;
+    if (config_.repair.enabled) repaired = repaired_input(repaired_report);
     StageRecord record = started("check");
     const Clock::time_point start = Clock::now();
     LoadedMesh loaded = repaired ? std::move(*repaired) : load_mesh(result_.input);
@@ -214,7 +217,8 @@ class Run {
     result_.input_surface = std::move(loaded.soup);
     mesh_ = std::move(loaded.mesh);
     record.faces_before = record.faces_after = mesh_.n_faces();
-    result_.input_quality = analyze_quality(result_.input_surface, stage_params_);
+    result_.input_quality =
+        repaired ? std::move(repaired_report) : analyze_quality(result_.input_surface, stage_params_);
     const QualityReport& report = result_.input_quality;
     record.seconds = seconds_since(start);
     fill_shape(record, report);

@@ -1,9 +1,10 @@
 #include "meshprep/quality/coincident_vertices.h"
 
+#include "meshprep/quality/face_edges.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <tuple>
-#include <utility>
 
 namespace meshprep {
 
@@ -11,16 +12,12 @@ namespace {
 
 // The vertices on an edge that only one face has (a seam of a split-vertex file is such an edge).
 std::vector<char> border_vertices(const TriangleSoup& surface) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  edges.reserve(3 * surface.triangles.size());
-  for (const Triangle& t : surface.triangles)
-    for (int k = 0; k < 3; ++k) edges.emplace_back(std::minmax(t[k], t[(k + 1) % 3]));
-  std::sort(edges.begin(), edges.end());
+  const std::vector<FaceEdge> edges = sorted_face_edges(surface);
   std::vector<char> border(surface.points.size(), 0);
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i == 1) border[edges[i].first] = border[edges[i].second] = 1;
+    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+    if (j - i == 1) border[edges[i].lo()] = border[edges[i].hi()] = 1;
     i = j;
   }
   return border;

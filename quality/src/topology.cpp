@@ -1,7 +1,7 @@
 #include "meshprep/quality/topology.h"
 
 #include "meshprep/core/union_find.h"
-
+#include "meshprep/quality/face_edges.h"
 
 #include <algorithm>
 #include <unordered_set>
@@ -16,29 +16,6 @@ void list_face(std::vector<std::size_t>& list, std::size_t face) {
 }
 
 bool repeats_index(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
-
-// One directed edge of a face, keyed by its undirected vertex pair.
-struct FaceEdge {
-  std::uint64_t key;
-  std::uint32_t face;
-  bool forward;  // traversed from the smaller to the larger vertex index
-};
-
-std::vector<FaceEdge> sorted_face_edges(const SoupView& soup) {
-  std::vector<FaceEdge> edges;
-  edges.reserve(3 * soup.triangles.size());
-  for (std::uint32_t f = 0; f < soup.triangles.size(); ++f) {
-    const Triangle& t = soup.triangles[f];
-    if (repeats_index(t)) continue;
-    for (int c = 0; c < 3; ++c) {
-      const std::uint64_t a = t[c], b = t[(c + 1) % 3];
-      edges.push_back({a < b ? (a << 32 | b) : (b << 32 | a), f, a < b});
-    }
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const FaceEdge& x, const FaceEdge& y) { return x.key < y.key || (x.key == y.key && x.face < y.face); });
-  return edges;
-}
 
 // Corner id of vertex v in face f: 3 f + local index.
 std::uint32_t corner(const SoupView& soup, std::uint32_t f, std::uint32_t v) {

@@ -1,34 +1,14 @@
 #include "repair/orient_components.h"
 
-#include <algorithm>
+#include "meshprep/quality/face_edges.h"
+
 #include <cstdint>
 #include <queue>
-#include <tuple>
 #include <utility>
 #include <vector>
 
 namespace meshprep::detail {
 namespace {
-
-// One face's use of an edge: the edge's sorted ends, the face, and whether the face runs lo -> hi.
-struct EdgeUse {
-  std::uint32_t lo, hi;
-  std::uint32_t face;
-  bool forward;
-};
-
-std::vector<EdgeUse> edge_uses(const TriangleSoup& soup) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * soup.triangles.size());
-  for (std::uint32_t f = 0; f < soup.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = soup.triangles[f][k], b = soup.triangles[f][(k + 1) % 3];
-      uses.push_back({std::min(a, b), std::max(a, b), f, a < b});
-    }
-  std::sort(uses.begin(), uses.end(),
-            [](const EdgeUse& x, const EdgeUse& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
-  return uses;
-}
 
 void flip(Triangle& t) { std::swap(t[1], t[2]); }
 
@@ -46,7 +26,7 @@ double six_volume(const TriangleSoup& soup, const std::vector<std::uint32_t>& fa
 
 OrientCounts orient_components(TriangleSoup& soup) {
   OrientCounts counts;
-  const std::vector<EdgeUse> uses = edge_uses(soup);
+  const std::vector<FaceEdge> uses = sorted_face_edges(soup);
   // For each face, its manifold edges' other face and whether the two ran the edge the same way
   // in the input; border and non-manifold edges join nothing (and keep a component open).
   struct Link {
@@ -57,7 +37,7 @@ OrientCounts orient_components(TriangleSoup& soup) {
   std::vector<char> open(soup.triangles.size(), 0);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
-    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
     if (j - i == 2) {
       const bool same = uses[i].forward == uses[i + 1].forward;
       links[uses[i].face].push_back({uses[i + 1].face, same});

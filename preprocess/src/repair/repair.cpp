@@ -2,6 +2,7 @@
 
 #include "repair/orient_components.h"
 #include "repair/weld_vertices.h"
+#include "shared/edge_lengths.h"
 
 #include "meshprep/core/errors.h"
 

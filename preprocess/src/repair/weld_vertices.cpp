@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
+#include <set>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -68,17 +68,6 @@ std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, 
 
 }  // namespace
 
-double median_edge_length(const TriangleSoup& soup) {
-  std::vector<double> lengths;
-  lengths.reserve(3 * soup.triangles.size());
-  for (const Triangle& t : soup.triangles)
-    for (int k = 0; k < 3; ++k) lengths.push_back((soup.points[t[k]] - soup.points[t[(k + 1) % 3]]).norm());
-  if (lengths.empty()) return 0;
-  const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
-  std::nth_element(lengths.begin(), middle, lengths.end());
-  return *middle;
-}
-
 WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   WeldCounts counts;
   std::vector<char> used(soup.points.size(), 0);
@@ -87,31 +76,24 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   UnionFind clusters(soup.points.size());
   counts.welded_vertices = join_close(soup, used, distance, clusters);
 
-  std::vector<Triangle> kept;
-  std::vector<std::array<std::uint32_t, 3>> seen;  // each kept face's sorted vertices
+  // Faces naming a vertex twice go; of faces on the same three vertices (either orientation),
+  // the first in the file stays.
+  std::vector<Triangle> faces;
+  std::set<std::array<std::uint32_t, 3>> seen;
   for (Triangle t : soup.triangles) {
     for (std::uint32_t& v : t) v = clusters.find(v);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
       ++counts.degenerate_faces;
       continue;
     }
-    kept.push_back(t);
+    std::array<std::uint32_t, 3> sorted{t[0], t[1], t[2]};
+    std::sort(sorted.begin(), sorted.end());
+    if (!seen.insert(sorted).second) {
+      ++counts.duplicate_faces;
+      continue;
+    }
+    faces.push_back(t);
   }
-  std::vector<std::size_t> order(kept.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  const auto sorted = [&](std::size_t f) {
-    std::array<std::uint32_t, 3> s{kept[f][0], kept[f][1], kept[f][2]};
-    std::sort(s.begin(), s.end());
-    return s;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sorted(a) < sorted(b); });
-  std::vector<char> duplicate(kept.size(), 0);
-  for (std::size_t i = 1; i < order.size(); ++i)
-    if (sorted(order[i]) == sorted(order[i - 1])) duplicate[order[i]] = 1;  // the first in the file stays
-  std::vector<Triangle> faces;
-  for (std::size_t f = 0; f < kept.size(); ++f)
-    if (duplicate[f]) ++counts.duplicate_faces;
-    else faces.push_back(kept[f]);
 
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
   std::vector<Vec3> points;

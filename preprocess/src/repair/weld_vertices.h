@@ -11,9 +11,6 @@ struct WeldCounts {
   std::size_t welded_vertices = 0, degenerate_faces = 0, duplicate_faces = 0, unused_vertices = 0;
 };
 
-/// The median length of the soup's edges (each face's three, shared edges counted per face).
-double median_edge_length(const TriangleSoup& soup);
-
 /// Welds vertices within `distance` of each other (each cluster onto its lowest index, which does
 /// not move), then removes faces naming a vertex twice and faces repeating another's vertices,
 /// and drops the vertices no face uses.
