@@ -87,6 +87,8 @@ Action add_enhance_command(CLI::App& app) {
   add_parameter(*cmd, p.target_min_angle_deg, o->params.target_min_angle_deg);
   add_parameter(*cmd, p.feature_angle_deg, o->params.feature_angle_deg);
   add_parameter(*cmd, p.flips, o->params.flips);
+  add_choice(*cmd, p.remesh, o->params.remesh, enhance_remesh_modes());
+  add_parameter(*cmd, p.max_faces, o->params.max_faces);
   add_samples_option(*cmd, o->samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");

@@ -4,6 +4,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace meshprep {
@@ -212,6 +213,65 @@ bool TriangleBvh::reaches_within(const Vec3& p, double squared_radius) const {
       if (distance <= squared_radius) stack[top++] = child;
   }
   return false;
+}
+
+namespace {
+
+// Where the ray origin + t direction crosses triangle (a, b, c): t, or infinity if it does not
+// (Moeller & Trumbore 1997; parallel rays and crossings at t <= 0 count as none).
+double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a;
+  const Vec3 p = direction.cross(ac);
+  const double det = ab.dot(p);
+  if (!(std::abs(det) > 0)) return std::numeric_limits<double>::infinity();
+  const Vec3 s = origin - a;
+  const double u = s.dot(p) / det;
+  if (u < 0 || u > 1) return std::numeric_limits<double>::infinity();
+  const Vec3 q = s.cross(ab);
+  const double v = direction.dot(q) / det;
+  if (v < 0 || u + v > 1) return std::numeric_limits<double>::infinity();
+  const double t = ac.dot(q) / det;
+  return t > 0 ? t : std::numeric_limits<double>::infinity();
+}
+
+// Where the ray enters `box` (0 if it starts inside), or infinity if it misses it (slab test).
+double ray_box(const Vec3& origin, const Vec3& inverse_direction, const Box3& box) {
+  double near = 0, far = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    double t0 = (box.min()[k] - origin[k]) * inverse_direction[k], t1 = (box.max()[k] - origin[k]) * inverse_direction[k];
+    if (std::isnan(t0) || std::isnan(t1)) continue;  // the ray runs in the slab's plane (0 * inf)
+    if (t0 > t1) std::swap(t0, t1);
+    near = std::max(near, t0);
+    far = std::min(far, t1);
+  }
+  return near <= far ? near : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+TriangleBvh::RayHit TriangleBvh::first_hit(const Vec3& origin, const Vec3& direction, std::size_t skip_face) const {
+  RayHit best{std::numeric_limits<double>::infinity(), 0};
+  if (nodes_.empty()) return best;
+  const Vec3 inverse = direction.cwiseInverse();
+  std::uint32_t stack[kMaxDepth * 2];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!(ray_box(origin, inverse, node.box) < best.distance)) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        if (order_[i] == skip_face) continue;
+        const Triangle& t = soup_.triangles[order_[i]];
+        const double d = ray_triangle(origin, direction, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
+        if (d < best.distance || (d == best.distance && order_[i] < best.face)) best = {d, order_[i]};
+      }
+      continue;
+    }
+    stack[top++] = node.left;
+    stack[top++] = node.right;
+  }
+  return best;
 }
 
 void TriangleBvh::for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const {

@@ -1,12 +1,16 @@
 #include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/preprocess/enhance/enhance_parameters.h"
 
+#include "enhance/adaptive_remeshing.h"
 #include "enhance/enhance_defaults.h"
 #include "enhance/move_guards.h"
 #include "enhance/quality_tail.h"
+#include "enhance/sizing_field.h"
 #include "enhance/surface_constraints.h"
 #include "shared/surface_fit.h"
 #include "enhance/surface_relocation.h"
+#include "enhance/reference_cover.h"
+#include "shared/edge_lengths.h"
 #include "enhance/topology_cleanup.h"
 
 #include "meshprep/core/soup_view.h"
@@ -20,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace meshprep {
 
@@ -77,6 +82,47 @@ double input_deviation(const TriangleSoup& input, const TriangleSoup* reference,
   return std::ceil(relative / unit) * unit;
 }
 
+// The remeshing (adaptive_remeshing.h) and the rounds after it keep to half the deviation bound,
+// and the remeshing's chords to a quarter (the sagitta of the curvature's sizing).
+constexpr double kRemeshShareOfBound = 0.35;
+constexpr double kChordShareOfBound = 0.25;
+// The default limit on the remeshing's faces: this many per input face, or the floor (a small
+// thin part needs many more faces than its export has: example021, 1,280 faces, asks for 25,000).
+constexpr std::size_t kMaxFacesPerInputFace = 10;
+constexpr std::size_t kMaxFacesFloor = 50000;
+// After remeshing, probes along the reference's bent edges are this fraction of a median edge apart.
+constexpr double kProbesPerEdge = 0.25;
+
+// Remeshes the input to its sizing field; taken back if it made the surface cross itself.
+// Returns whether it was kept.
+bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const EnhanceParams& params, double max_deviation,
+            double diagonal, std::size_t allowed_intersections, EnhanceResult& result) {
+  detail::SizingRules sizing_rules;
+  sizing_rules.chord_tolerance = kChordShareOfBound * max_deviation;
+  sizing_rules.max_faces = params.max_faces > 0 ? params.max_faces : std::max(kMaxFacesFloor, kMaxFacesPerInputFace * mesh.n_faces());
+  const detail::SizingField sizing(mesh, constraints, sizing_rules);
+  result.sizing_shortest = sizing.shortest() / diagonal;
+  result.sizing_base = sizing.base_length() / diagonal;
+  result.sizing_faces = sizing.estimated_faces();
+  result.sizing_capped = sizing.capped();
+  detail::RemeshRules rules;
+  rules.max_deviation = kRemeshShareOfBound * max_deviation;
+  rules.target_min_angle_deg = params.target_min_angle_deg;
+  rules.max_faces = sizing_rules.max_faces;
+  const TriMesh before = mesh;
+  const detail::RemeshCounts counts = detail::remesh_to_sizing(mesh, constraints, sizing, rules);
+  if (find_self_intersections(MeshSoupView(mesh)).count > allowed_intersections) {
+    mesh = before;
+    return false;
+  }
+  result.remeshed = true;
+  result.remesh_splits = counts.splits;
+  result.remesh_collapses = counts.collapses;
+  result.remesh_flips = counts.flips;
+  result.sizing_capped = result.sizing_capped || counts.stopped_at_max_faces;
+  return true;
+}
+
 void check(const EnhanceParams& params, const TriMesh& mesh) {
   if (mesh.n_faces() == 0) throw InvalidInput("enhance: the mesh has no faces");
   const EnhanceParameters& info = enhance_parameters();
@@ -99,9 +145,14 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   const TriangleSoup input = soup_from_mesh(mesh);
   const TriangleSoup moved_reference = reference ? near_origin.moved(*reference) : TriangleSoup();
   const TriangleSoup& surface = reference ? moved_reference : input;
-  detail::SurfaceConstraints constraints(mesh, surface, params.feature_angle_deg);
+  const QualityTail input_tail = detail::measure_tail(mesh, params.target_min_angle_deg);
+  const bool remeshing = params.remesh == EnhanceRemesh::On ||
+                         (params.remesh == EnhanceRemesh::Auto && input_tail.under_target_fraction > EnhanceParams::kRemeshAbove);
+  // Remeshing, the edges between planes are creases too (surface_constraints.h); taken back, the
+  // features are found again as for any other input.
+  std::optional<detail::SurfaceConstraints> features;
+  features.emplace(mesh, surface, params.feature_angle_deg, remeshing);
   const double diagonal = bounding_box(surface).diagonal().norm();
-  const std::vector<TriangleBvh::Hit> coverage = detail::reference_coverage(mesh, surface);
   double relative_deviation = kLoosest;
   if (params.max_deviation)
     relative_deviation = *params.max_deviation;
@@ -109,10 +160,6 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     relative_deviation = std::min(own, kLoosest);
   const double max_deviation = relative_deviation * diagonal;
   const std::size_t allowed_intersections = find_self_intersections(input).count;
-  // Each removed vertex takes two faces with it, each split adds two: the count stays within
-  // max_face_change of the input's either way.
-  const auto face_budget = static_cast<std::size_t>(params.max_face_change * static_cast<double>(mesh.n_faces()));
-  const std::size_t removal_budget = face_budget / 2;
   const double min_angle_cosine = std::cos(params.target_min_angle_deg * M_PI / 180.0);
   // Ceres runs on one thread: with more, its cost sums depend on the thread count, so the LM steps,
   // and the output, did too (femur: 1 and 2 threads gave different meshes). Measured on bunny00
@@ -123,14 +170,31 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   EnhanceResult result;
   result.input_self_intersections = allowed_intersections;
   result.max_deviation = relative_deviation;
+  result.before = input_tail;
+  result.faces_before = mesh.n_faces();
+  if (remeshing && !remesh(mesh, *features, params, max_deviation, diagonal, allowed_intersections, result))
+    features.emplace(mesh, surface, params.feature_angle_deg, false);
+  detail::SurfaceConstraints& constraints = *features;
   for (const auto v : mesh.vertices()) {
     if (constraints.role(v) == detail::VertexRole::Line) ++result.line_vertices;
     if (constraints.role(v) == detail::VertexRole::Fixed) ++result.fixed_vertices;
   }
-  result.before = detail::measure_tail(mesh, params.target_min_angle_deg);
-  std::vector<double> allowed_distance;  // of each reference vertex to the mesh
+  // After remeshing, the rounds keep to the remeshing's share of the bound too: their guards
+  // sample the faces (centroid, edge midpoints) and the reference (vertices, bent edges), and the
+  // report's denser sampling measured up to 1.5 times what they allow on the CAD parts.
+  const double round_deviation = result.remeshed ? kRemeshShareOfBound * max_deviation : max_deviation;
+  // Each removed vertex takes two faces with it, each split adds two: the count stays within
+  // max_face_change of the rounds' start either way.
+  const auto face_budget = static_cast<std::size_t>(params.max_face_change * static_cast<double>(mesh.n_faces()));
+  const std::size_t removal_budget = face_budget / 2;
+  // The remeshed surface is a new tessellation: points along the reference's bent edges are
+  // probed as well as its vertices, at a quarter of the new median edge.
+  const std::vector<Vec3> probes =
+      detail::reference_probes(surface, result.remeshed ? kProbesPerEdge * detail::median_edge_length(mesh) : 0);
+  const std::vector<TriangleBvh::Hit> coverage = detail::reference_coverage(mesh, probes);
+  std::vector<double> allowed_distance;  // of each probe to the mesh
   for (const auto& hit : coverage)
-    allowed_distance.push_back(std::max(max_deviation, std::sqrt(hit.squared_distance)));
+    allowed_distance.push_back(std::max(round_deviation, std::sqrt(hit.squared_distance)));
   QualityTail best = result.before;
   std::size_t flips_made = 0, removed_vertices = 0, split_edges = 0;
   TriMesh best_mesh = mesh;
@@ -139,7 +203,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     result.rounds = round;
     if (params.flips) {
       const TriMesh before_cleanup = mesh;
-      const detail::CleanupRules rules{params.flip_dihedral_deg, max_deviation, min_angle_cosine};
+      const detail::CleanupRules rules{params.flip_dihedral_deg, round_deviation, min_angle_cosine};
       const std::size_t flips = detail::flip_for_angles(mesh, constraints, rules);
       const std::size_t removed = detail::collapse_for_angles(mesh, constraints, rules, removal_budget - removed_vertices);
       const std::size_t split_budget = (face_budget + 2 * (removed_vertices + removed)) / 2 - split_edges;
@@ -154,7 +218,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     }
     const Points before = points_of(mesh);
     const detail::RelocationWeights weights{detail::tail_weights(mesh, params), params.fidelity_weight};
-    const detail::MoveGuards guards(mesh, constraints, allowed_distance, allowed_intersections, max_deviation);
+    const detail::MoveGuards guards(mesh, constraints, probes, allowed_distance, allowed_intersections, round_deviation);
     const std::vector<Vec3> moved = detail::relocate_on_surface(mesh, constraints, weights, threads);
     for (const auto v : mesh.vertices()) {
       const std::size_t i = static_cast<std::size_t>(v.idx());
@@ -181,11 +245,12 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   // The kept round's fit ran before its guards took moves back; one more fit settles the result,
   // under the same guards as a round's moves (a fit along the normals can sharpen an edge into a
   // fold as well as make the surface cross itself).
-  const detail::MoveGuards final_guards(mesh, constraints, allowed_distance, allowed_intersections, max_deviation);
+  const detail::MoveGuards final_guards(mesh, constraints, probes, allowed_distance, allowed_intersections, round_deviation);
   fit_surface_vertices(mesh, constraints, min_angle_cosine);
   result.undone_moves += final_guards.enforce(mesh);
   require_finite_points(mesh, "enhance");
   result.after = detail::measure_tail(mesh, params.target_min_angle_deg);
+  result.faces_after = mesh.n_faces();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

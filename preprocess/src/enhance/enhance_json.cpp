@@ -1,4 +1,5 @@
 #include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/enhance/enhance_parameters.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,14 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
   json["line_vertices"] = result.line_vertices;
   json["fixed_vertices"] = result.fixed_vertices;
   json["undone_moves"] = result.undone_moves;
+  json["remesh"] = {{"remeshed", result.remeshed},
+                    {"splits", result.remesh_splits},
+                    {"collapses", result.remesh_collapses},
+                    {"flips", result.remesh_flips},
+                    {"sizing_shortest", result.sizing_shortest},
+                    {"sizing_base", result.sizing_base},
+                    {"sizing_faces", result.sizing_faces},
+                    {"sizing_capped", result.sizing_capped}};
   json["parameters"] = {{"max_deviation", result.max_deviation},
                         {"max_deviation_auto", !params.max_deviation},
                         {"target_min_angle_deg", params.target_min_angle_deg},
@@ -32,7 +41,9 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
                         {"tail_weight", params.tail_weight},
                         {"fidelity_weight", params.fidelity_weight},
                         {"flip_dihedral_deg", params.flip_dihedral_deg},
-                        {"flips", params.flips}};
+                        {"flips", params.flips},
+                        {"remesh", choice_name(enhance_remesh_modes(), params.remesh)},
+                        {"max_faces", params.max_faces}};
   json["tail_before"] = to_json(result.before);
   json["tail_after"] = to_json(result.after);
   json["time_seconds"] = result.seconds;

@@ -19,8 +19,21 @@ const EnhanceParameters& enhance_parameters() {
       {"feature_angle_deg", "--feature-angle",
        "edges with a larger dihedral angle (degrees) are creases: their vertices slide only along them; 180 = none",
        {0, 180, true, false}},
-      {"flips", "--flips,!--no-flips", "flip edges where moving vertices cannot help", {}}};
+      {"flips", "--flips,!--no-flips", "flip edges where moving vertices cannot help", {}},
+      {"remesh", "--remesh",
+       "remesh first to a sizing field from the surface (curvature, thickness, the input's density): split long "
+       "edges, collapse short ones, flip toward valence 6; auto: when more than " +
+           parameter_text(100 * EnhanceParams::kRemeshAbove) + " % of the faces are under the target angle",
+       {}},
+      {"max_faces", "--max-faces", "the remeshing's faces at most (the sizing is coarsened to fit); 0: ten times the input's, at least 50000",
+       {0, 1e12}}};
   return parameters;
+}
+
+const Choices<EnhanceRemesh>& enhance_remesh_modes() {
+  static const Choices<EnhanceRemesh> modes = {
+      {"auto", EnhanceRemesh::Auto}, {"on", EnhanceRemesh::On}, {"off", EnhanceRemesh::Off}};
+  return modes;
 }
 
 }  // namespace meshprep

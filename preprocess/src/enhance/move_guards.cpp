@@ -41,22 +41,23 @@ bool touches(const TriMesh& mesh, std::size_t face, const std::vector<char>& dir
 
 }  // namespace
 
-std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const SoupView& reference) {
+std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const std::vector<Vec3>& probes) {
   const MeshSoupView surface(mesh);
   const TriangleBvh bvh(surface);
-  std::vector<TriangleBvh::Hit> hits(reference.points.size());
-  tbb::parallel_for(std::size_t(0), hits.size(), [&](std::size_t i) { hits[i] = bvh.closest_point(reference.points[i]); });
+  std::vector<TriangleBvh::Hit> hits(probes.size());
+  tbb::parallel_for(std::size_t(0), hits.size(), [&](std::size_t i) { hits[i] = bvh.closest_point(probes[i]); });
   return hits;
 }
 
-MoveGuards::MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraints, const std::vector<double>& allowed_distance,
-                       std::size_t allowed_intersections, double max_deviation)
+MoveGuards::MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraints, const std::vector<Vec3>& probes,
+                       const std::vector<double>& allowed_distance, std::size_t allowed_intersections, double max_deviation)
     : constraints_(constraints),
+      probes_(probes),
       allowed_distance_(allowed_distance),
       allowed_intersections_(allowed_intersections),
       max_deviation_(max_deviation),
       before_(mesh.points(), mesh.points() + mesh.n_vertices()),
-      coverage_before_(reference_coverage(mesh, constraints.reference_bvh().surface())) {}
+      coverage_before_(reference_coverage(mesh, probes)) {}
 
 bool MoveGuards::moved(const TriMesh& mesh, TriMesh::VertexHandle v) const {
   return mesh.point(v) != before_[static_cast<std::size_t>(v.idx())];
@@ -143,7 +144,7 @@ std::size_t MoveGuards::undo_bad_faces(TriMesh& mesh, const std::vector<char>& d
   return undone;
 }
 
-// A reference vertex the mesh has moved away from sends the vertices of its nearest faces, now and
+// A probe of the reference the mesh has moved away from sends the vertices of its nearest faces, now and
 // at the start of the round, back. Its distance can only have grown if the face it was nearest to
 // at the last look has changed since, so only those are measured again.
 std::size_t MoveGuards::undo_uncovering(TriMesh& mesh, const std::vector<char>& dirty, std::vector<std::size_t>& nearest_face) const {
@@ -153,9 +154,8 @@ std::size_t MoveGuards::undo_uncovering(TriMesh& mesh, const std::vector<char>& 
   if (suspects.empty()) return 0;
   const MeshSoupView surface(mesh);
   const TriangleBvh bvh(surface);
-  const auto& points = constraints_.reference_bvh().surface().points;
   std::vector<TriangleBvh::Hit> coverage(suspects.size());
-  tbb::parallel_for(std::size_t(0), suspects.size(), [&](std::size_t k) { coverage[k] = bvh.closest_point(points[suspects[k]]); });
+  tbb::parallel_for(std::size_t(0), suspects.size(), [&](std::size_t k) { coverage[k] = bvh.closest_point(probes_[suspects[k]]); });
   std::size_t undone = 0;
   for (std::size_t k = 0; k < suspects.size(); ++k) {
     const std::size_t i = suspects[k];

@@ -12,23 +12,26 @@
 
 namespace meshprep::detail {
 
-/// Distance of every point of `reference` to the mesh, and the face where it is reached.
-std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const SoupView& reference);
+/// Distance of every probe (points of the reference: reference_cover.h) to the mesh, and the face
+/// where it is reached.
+std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const std::vector<Vec3>& probes);
 
 /// Takes back, vertex by vertex (to where the round found it), every move that:
 /// - turns a face by more than 60 degrees (or folds it over);
 /// - carries a face (its centroid or an edge midpoint) farther from the reference than the bound,
 ///   and than it was;
-/// - leaves a reference vertex farther from the mesh than allowed (the bound, or the input's own
-///   distance);
+/// - leaves a probe of the reference (its vertices, and points along its bent edges where
+///   reference_probes() adds them) farther from the mesh than allowed (the bound, or the input's
+///   own distance);
 /// - makes the surface cross itself beyond the pairs the input had.
 /// Putting a vertex back can upset another guard (a face half old, half new), so the guards run
 /// in passes until none puts anything back; each pass measures only what the previous one changed.
 class MoveGuards {
  public:
   /// `mesh` as the round found it (before any move); its topology must not change until enforce().
-  MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraints, const std::vector<double>& allowed_distance,
-             std::size_t allowed_intersections, double max_deviation);
+  /// `allowed_distance` holds one distance per probe.
+  MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraints, const std::vector<Vec3>& probes,
+             const std::vector<double>& allowed_distance, std::size_t allowed_intersections, double max_deviation);
 
   /// Returns the number of vertices put back.
   std::size_t enforce(TriMesh& mesh) const;
@@ -40,6 +43,7 @@ class MoveGuards {
   std::size_t put_back(TriMesh& mesh, TriMesh::FaceHandle f) const;
 
   const SurfaceConstraints& constraints_;
+  const std::vector<Vec3>& probes_;
   const std::vector<double>& allowed_distance_;
   std::size_t allowed_intersections_;
   double max_deviation_;

@@ -1,6 +1,7 @@
 #include "enhance/surface_constraints.h"
 
 #include "shared/edge_lengths.h"
+#include "shared/triangle_angles.h"
 
 #include "meshprep/core/union_find.h"
 
@@ -55,10 +56,23 @@ bool straight_through(const TriMesh& mesh, VertexHandle v, const std::vector<Edg
   return a.dot(b) <= cosine * a.norm() * b.norm();
 }
 
+// Whether face f has a neighbour in its plane (within kCoplanarCosine) across one of its edges.
+bool has_coplanar_neighbour(const TriMesh& mesh, TriMesh::FaceHandle f) {
+  const Vec3 n = to_eigen(mesh.calc_face_normal(f));
+  for (const auto h : mesh.fh_range(f)) {
+    const auto g = mesh.opposite_face_handle(h);
+    if (g.is_valid() && n.dot(to_eigen(mesh.calc_face_normal(g))) > kCoplanarCosine) return true;
+  }
+  return false;
+}
+
 // Sharp interior edges that belong to a run at least kShortestCrease median edge lengths long:
 // isolated sharp edges of a scan's noise are no feature, a CAD part's long straight edge is even
-// when simplification left it only two or three edges (fandisk after CGAL's decimation).
-std::vector<char> creases(const TriMesh& mesh, double cos_feature) {
+// when simplification left it only two or three edges (fandisk after CGAL's decimation). With
+// `between_planes`, also those whose two faces each have a neighbour in their plane: a CAD
+// tessellation's edge between two planes (a box of twelve triangles has runs of one edge; a
+// scan's faces almost never have such neighbours: 0.5 % of the femur's edges are flat).
+std::vector<char> creases(const TriMesh& mesh, double cos_feature, bool between_planes) {
   std::vector<char> candidate(mesh.n_edges(), 0);
   for (const auto e : mesh.edges())
     if (!mesh.is_boundary(e) && sharp(mesh, e, cos_feature)) candidate[static_cast<std::size_t>(e.idx())] = 1;
@@ -74,21 +88,26 @@ std::vector<char> creases(const TriMesh& mesh, double cos_feature) {
     if (candidate[static_cast<std::size_t>(e.idx())]) run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] += mesh.calc_edge_length(e);
   const double shortest = kShortestCrease * median_edge_length(mesh);
   std::vector<char> crease(mesh.n_edges(), 0);
-  for (const auto e : mesh.edges())
-    crease[static_cast<std::size_t>(e.idx())] =
-        candidate[static_cast<std::size_t>(e.idx())] && run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] >= shortest;
+  for (const auto e : mesh.edges()) {
+    const std::size_t i = static_cast<std::size_t>(e.idx());
+    if (!candidate[i]) continue;
+    crease[i] = run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] >= shortest ||
+                (between_planes && has_coplanar_neighbour(mesh, mesh.face_handle(mesh.halfedge_handle(e, 0))) &&
+                 has_coplanar_neighbour(mesh, mesh.face_handle(mesh.halfedge_handle(e, 1))));
+  }
   return crease;
 }
 
 }  // namespace
 
-SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& reference, double feature_angle_deg)
+SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& reference, double feature_angle_deg,
+                                       bool planar_creases)
     : mesh_(mesh), bvh_(reference) {
   mesh_.add_property(role_);
   mesh_.add_property(line_);
   mesh_.add_property(offset_);
   mesh_.add_property(feature_);
-  std::vector<char> feature = creases(mesh, std::cos(feature_angle_deg * M_PI / 180.0));
+  std::vector<char> feature = creases(mesh, std::cos(feature_angle_deg * M_PI / 180.0), planar_creases);
   for (const auto e : mesh.edges())
     if (mesh.is_boundary(e)) feature[static_cast<std::size_t>(e.idx())] = 1;
   for (const auto e : mesh.edges()) mesh_.property(feature_, e) = feature[static_cast<std::size_t>(e.idx())];
@@ -140,11 +159,15 @@ SurfaceConstraints::~SurfaceConstraints() {
   mesh_.remove_property(feature_);
 }
 
-Vec3 SurfaceConstraints::reference_normal(std::size_t face) const {
-  const auto& t = bvh_.surface().triangles[face];
-  const auto& p = bvh_.surface().points;
-  const Vec3 n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
-  return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+Vec3 SurfaceConstraints::reference_normal(std::size_t face) const { return unit_normal(bvh_.surface(), face); }
+
+bool SurfaceConstraints::collapse_merges_feature(TriMesh::HalfedgeHandle h) const {
+  for (const auto side : {h, mesh_.opposite_halfedge_handle(h)}) {
+    if (mesh_.is_boundary(side)) continue;
+    const auto next = mesh_.next_halfedge_handle(side);
+    if (is_feature(mesh_.edge_handle(next)) || is_feature(mesh_.edge_handle(mesh_.next_halfedge_handle(next)))) return true;
+  }
+  return false;
 }
 
 std::pair<VertexHandle, VertexHandle> SurfaceConstraints::line_neighbours(VertexHandle v) const {
@@ -155,16 +178,43 @@ std::pair<VertexHandle, VertexHandle> SurfaceConstraints::line_neighbours(Vertex
   return {ends[0], ends[1]};
 }
 
-TriMesh::VertexHandle SurfaceConstraints::split_surface_edge(EdgeHandle e) {
+TriMesh::VertexHandle SurfaceConstraints::split_surface_edge(EdgeHandle e, bool ends_offset) {
   const auto h = mesh_.halfedge_handle(e, 0);
-  const Vec3 middle = 0.5 * (point(mesh_, mesh_.from_vertex_handle(h)) + point(mesh_, mesh_.to_vertex_handle(h)));
+  const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+  const Vec3 middle = 0.5 * (point(mesh_, a) + point(mesh_, b));
   const VertexHandle m = mesh_.add_vertex(to_openmesh(middle));
   mesh_.split(e, m);
   mesh_.property(role_, m) = VertexRole::Surface;
   mesh_.property(line_, m) = -1;
-  const TriangleBvh::Hit hit = bvh_.closest_point(middle);
-  mesh_.property(offset_, m) = (middle - hit.point).dot(reference_normal(hit.face));
+  if (ends_offset) {
+    mesh_.property(offset_, m) = 0.5 * (mesh_.property(offset_, a) + mesh_.property(offset_, b));
+  } else {
+    const TriangleBvh::Hit hit = bvh_.closest_point(middle);
+    mesh_.property(offset_, m) = (middle - hit.point).dot(reference_normal(hit.face));
+  }
   for (const auto out : mesh_.voh_range(m)) mesh_.property(feature_, mesh_.edge_handle(out)) = 0;
+  return m;
+}
+
+TriMesh::VertexHandle SurfaceConstraints::split_feature_edge(EdgeHandle e) {
+  const auto h = mesh_.halfedge_handle(e, 0);
+  const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+  int line = role(a) == VertexRole::Line ? mesh_.property(line_, a) : -1;
+  if (line < 0 && role(b) == VertexRole::Line) line = mesh_.property(line_, b);
+  if (line < 0) {
+    line = static_cast<int>(lines_.size());
+    lines_.push_back({{point(mesh_, a), point(mesh_, b)}});
+  }
+  const VertexHandle m = mesh_.add_vertex(mesh_.point(a));
+  mesh_.property(role_, m) = VertexRole::Line;
+  mesh_.property(line_, m) = line;
+  mesh_.property(offset_, m) = 0;
+  mesh_.set_point(m, to_openmesh(project(m, 0.5 * (point(mesh_, a) + point(mesh_, b)))));
+  mesh_.split(e, m);
+  for (const auto out : mesh_.voh_range(m)) {
+    const VertexHandle end = mesh_.to_vertex_handle(out);
+    mesh_.property(feature_, mesh_.edge_handle(out)) = end == a || end == b;
+  }
   return m;
 }
 

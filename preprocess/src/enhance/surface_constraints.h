@@ -29,14 +29,21 @@ enum class VertexRole : std::uint8_t {
 class SurfaceConstraints {
  public:
   /// `mesh` and `reference` must outlive this object, which adds its properties to `mesh` and
-  /// removes them when destroyed.
-  SurfaceConstraints(TriMesh& mesh, const TriangleSoup& reference, double feature_angle_deg);
+  /// removes them when destroyed. With `planar_creases`, a sharp edge between two faces that each
+  /// have a neighbour in their own plane is a crease however short its run: a CAD tessellation's
+  /// (one the enhancement remeshes).
+  SurfaceConstraints(TriMesh& mesh, const TriangleSoup& reference, double feature_angle_deg, bool planar_creases = false);
   ~SurfaceConstraints();
   SurfaceConstraints(const SurfaceConstraints&) = delete;
   SurfaceConstraints& operator=(const SurfaceConstraints&) = delete;
 
   VertexRole role(TriMesh::VertexHandle v) const { return mesh_.property(role_, v); }
   bool is_feature(TriMesh::EdgeHandle e) const { return mesh_.property(feature_, e) != 0; }
+
+  /// Whether collapsing h would merge a feature edge away: each face that vanishes merges its edge
+  /// (v, p) into (w, p), and OpenMesh may keep either handle, so a feature edge (w, p) would lose
+  /// its mark, and the line through w its segment.
+  bool collapse_merges_feature(TriMesh::HalfedgeHandle h) const;
 
   /// The two feature edges' other ends of a Line vertex.
   std::pair<TriMesh::VertexHandle, TriMesh::VertexHandle> line_neighbours(TriMesh::VertexHandle v) const;
@@ -49,8 +56,13 @@ class SurfaceConstraints {
   Vec3 project(TriMesh::VertexHandle v, const Vec3& x) const;
 
   /// Splits non-feature edge e at its midpoint, a new Surface vertex at its present distance from
-  /// the reference (so that relocation keeps it there). Returns the new vertex.
-  TriMesh::VertexHandle split_surface_edge(TriMesh::EdgeHandle e);
+  /// the reference (so that relocation keeps it there), or, with `ends_offset`, at the mean of
+  /// its ends' offsets (project() then puts it where its ends' surface is). Returns the new vertex.
+  TriMesh::VertexHandle split_surface_edge(TriMesh::EdgeHandle e, bool ends_offset = false);
+  /// Splits feature edge e at its midpoint, put on the feature line it runs along: a new Line
+  /// vertex on the line of either end (an edge between two corners starts a line of its own
+  /// segment). Its two halves stay feature edges. Returns the new vertex.
+  TriMesh::VertexHandle split_feature_edge(TriMesh::EdgeHandle e);
   /// Closest point of the reference surface to x.
   TriangleBvh::Hit closest_on_reference(const Vec3& x) const { return bvh_.closest_point(x); }
   const TriangleBvh& reference_bvh() const { return bvh_; }

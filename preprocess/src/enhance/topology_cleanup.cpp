@@ -1,5 +1,7 @@
 #include "enhance/topology_cleanup.h"
 
+#include "enhance/reference_cover.h"
+
 #include "shared/triangle_angles.h"
 
 #include "meshprep/quality/triangle_bvh.h"
@@ -19,47 +21,6 @@ Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v))
 
 double distance_to_reference(const SurfaceConstraints& constraints, const Vec3& p) {
   return std::sqrt(constraints.closest_on_reference(p).squared_distance);
-}
-
-using Corners = std::array<Vec3, 3>;
-
-double distance_to_patch(const Vec3& p, const std::vector<Corners>& faces) {
-  double nearest = INFINITY;
-  for (const Corners& c : faces) nearest = std::min(nearest, (closest_point_on_triangle(p, c[0], c[1], c[2]) - p).squaredNorm());
-  return std::sqrt(nearest);
-}
-
-// Whether replacing a patch of faces (`before`, bounded by the `rim` segments) by `after` (the
-// same rim) keeps every reference vertex under the patch within max(limit, its distance before).
-// The new faces' own points can all lie on the reference while the reference is uncovered: a
-// chord across a faceted cylinder's strips (fandisk) leaves the strip line between them 1.6 times
-// the bound away. A reference vertex nearer the rim than the patch's inside belongs to the faces
-// beyond the rim and is not asked.
-bool keeps_reference_covered(const SurfaceConstraints& constraints, const std::vector<Corners>& before,
-                             const std::vector<Corners>& after, const std::vector<std::pair<Vec3, Vec3>>& rim,
-                             double limit) {
-  Box3 box;
-  box.setEmpty();
-  for (const Corners& c : before)
-    for (const Vec3& q : c) box.extend(q);
-  box.min().array() -= limit;
-  box.max().array() += limit;
-  const SoupView& reference = constraints.reference_bvh().surface();
-  bool covered = true;
-  constraints.reference_bvh().for_each_overlapping(box, [&](std::size_t face) {
-    for (const std::uint32_t corner : reference.triangles[face]) {
-      const Vec3& p = reference.points[corner];
-      if (!covered) return;
-      if (!box.contains(p)) continue;
-      const double old_distance = distance_to_patch(p, before);
-      if (old_distance > limit) continue;
-      double to_rim = INFINITY;
-      for (const auto& [a, b] : rim) to_rim = std::min(to_rim, (closest_point_on_segment(p, a, b) - p).norm());
-      if (to_rim <= old_distance) continue;
-      if (distance_to_patch(p, after) > limit) covered = false;
-    }
-  });
-  return covered;
 }
 
 }  // namespace
@@ -129,14 +90,7 @@ CollapseEffect collapse_effect(const TriMesh& mesh, const SurfaceConstraints& co
   const VertexHandle v = mesh.from_vertex_handle(h), w = mesh.to_vertex_handle(h);
   const Vec3 x = point(mesh, v), y = point(mesh, w);
   CollapseEffect effect;
-  // Each face that vanishes merges its edge (v, p) into (w, p), and OpenMesh may keep either
-  // handle: a feature edge (w, p) would lose its mark, and the line through w its segment.
-  for (const auto side : {h, mesh.opposite_halfedge_handle(h)}) {
-    if (mesh.is_boundary(side)) continue;
-    const auto next = mesh.next_halfedge_handle(side);
-    if (constraints.is_feature(mesh.edge_handle(next)) || constraints.is_feature(mesh.edge_handle(mesh.next_halfedge_handle(next))))
-      return effect;
-  }
+  if (constraints.collapse_merges_feature(h)) return effect;
   double nearest_new_face = INFINITY;  // from the removed vertex
   std::vector<Corners> fan_before, fan_after;
   std::vector<std::pair<Vec3, Vec3>> rim;
@@ -241,10 +195,9 @@ std::size_t collapse_for_angles(TriMesh& mesh, const SurfaceConstraints& constra
   return removed;
 }
 
-// Coplanar within 0.1 degrees. With 1 degree the femur's nearly flat spots were split as well, and
-// its smallest angle fell from 15.7 to 10.5 degrees (a short edge that the spent removal budget
-// left); with 5 degrees TetGen's smallest dihedral on it fell from 5.5 to 4.0.
-const double kCoplanarCosine = std::cos(0.1 * M_PI / 180.0);
+// Coplanar: within 0.1 degrees (kCoplanarCosine). With 1 degree the femur's nearly flat spots were
+// split as well, and its smallest angle fell from 15.7 to 10.5 degrees (a short edge that the spent
+// removal budget left); with 5 degrees TetGen's smallest dihedral on it fell from 5.5 to 4.0.
 
 std::size_t split_for_angles(TriMesh& mesh, SurfaceConstraints& constraints, const CleanupRules& rules,
                              std::size_t budget) {

@@ -2,6 +2,7 @@
 // Shape tests of the simplifier's guards, polish and fit and of the enhancement's, without trigonometry.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/soup_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,17 @@ inline double smallest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c)
 
 /// (b - a) x (c - a): twice the area times the unit normal.
 inline Vec3 area_normal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+/// Unit normal of face `face` of a soup (zero if it is degenerate).
+inline Vec3 unit_normal(const SoupView& soup, std::size_t face) {
+  const auto& t = soup.triangles[face];
+  const Vec3 n = area_normal(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
+  return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+}
+
+/// Two faces whose unit normals' cosine exceeds this (0.1 degrees apart) are coplanar: a CAD
+/// part's plane; a scan has almost no such pairs (0.5 % of the femur's edges).
+inline const double kCoplanarCosine = std::cos(0.1 * M_PI / 180.0);
 
 /// Cosine of the angle between two (area) normals.
 inline double normal_cosine(const Vec3& m, const Vec3& n) { return m.dot(n) / (m.norm() * n.norm()); }

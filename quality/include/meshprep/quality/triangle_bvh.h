@@ -48,6 +48,14 @@ class TriangleBvh {
   /// triangle and never opens a box farther than the radius.
   bool reaches_within(const Vec3& p, double squared_radius) const;
 
+  struct RayHit {
+    double distance = 0;  ///< along the direction (a unit direction gives lengths); infinity: none
+    std::size_t face = 0;
+  };
+  /// The nearest crossing of the ray origin + t direction (t > 0) with a triangle other than
+  /// `skip_face` (Moeller & Trumbore's test per triangle; a ray in a triangle's plane does not
+  /// cross it).
+  RayHit first_hit(const Vec3& origin, const Vec3& direction, std::size_t skip_face) const;
   /// Calls `visit(face)` for every triangle whose box overlaps `box`.
   void for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const;
 

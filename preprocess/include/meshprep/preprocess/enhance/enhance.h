@@ -25,6 +25,10 @@
 
 namespace meshprep {
 
+/// When the enhancement remeshes first (adaptive_remeshing.h): always, never, or when the input
+/// has more than EnhanceParams::kRemeshAbove of its faces under the target angle.
+enum class EnhanceRemesh { Auto, On, Off };
+
 struct EnhanceParams {
   std::size_t iterations = 10;          ///< rounds at most (each: statistic, flips, Ceres, projection)
   /// A face's centroid may not move farther than this from the reference (relative to the
@@ -39,6 +43,13 @@ struct EnhanceParams {
   double target_min_angle_deg = 20;     ///< faces under this smallest angle are always in the tail
   double feature_angle_deg = 45;        ///< an edge with a larger dihedral angle is a crease; 180 = none
   bool flips = true;
+  EnhanceRemesh remesh = EnhanceRemesh::Auto;
+  /// Auto remeshes inputs with more than this share of faces under the target angle: one that
+  /// meets issue 32's goal (at most 1 %) is a tessellation someone chose, and only polished.
+  static constexpr double kRemeshAbove = 0.01;
+  /// The remeshing's sizing field asks for at most this many faces (it is coarsened uniformly when
+  /// it would ask for more); 0: ten times the input's faces, at least 50,000.
+  std::size_t max_faces = 0;
   /// Collapses may remove at most this fraction of the faces (two per removed vertex).
   double max_face_change = 0.02;
   /// The statistic's constants; defaults fitted by bench/tune_enhance (see enhance_defaults.h).
@@ -69,6 +80,14 @@ struct EnhanceResult {
   std::size_t fixed_vertices = 0;       ///< corners and non-manifold vertices: kept
   std::size_t undone_moves = 0;         ///< vertex moves taken back by the guards
   std::size_t input_self_intersections = 0;  ///< intersecting face pairs of the input (the guards allow no more)
+  bool remeshed = false;                ///< the remeshing ran (and was kept)
+  std::size_t remesh_splits = 0, remesh_collapses = 0, remesh_flips = 0;
+  /// The sizing field, relative to the reference's diagonal: its shortest length, and its base
+  /// (the input's own density, where nothing asks for less).
+  double sizing_shortest = 0, sizing_base = 0;
+  std::size_t sizing_faces = 0;         ///< the faces the sizing field asks for (estimated over the input)
+  bool sizing_capped = false;           ///< coarsened to stay within max_faces, or the splits stopped there
+  std::size_t faces_before = 0, faces_after = 0;
   QualityTail before, after;
   double seconds = 0;
 };

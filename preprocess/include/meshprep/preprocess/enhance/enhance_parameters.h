@@ -4,13 +4,17 @@
 /// (core/parameter.h): their keys, flags, ranges and meanings. The defaults are EnhanceParams'.
 
 #include "meshprep/core/parameter.h"
+#include "meshprep/preprocess/enhance/enhance.h"
 
 namespace meshprep {
 
 struct EnhanceParameters {
-  ParameterInfo iterations, max_deviation, target_min_angle_deg, feature_angle_deg, flips;
+  ParameterInfo iterations, max_deviation, target_min_angle_deg, feature_angle_deg, flips, remesh, max_faces;
 };
 
 const EnhanceParameters& enhance_parameters();
+
+/// auto, on, off.
+const Choices<EnhanceRemesh>& enhance_remesh_modes();
 
 }  // namespace meshprep

@@ -1,0 +1,72 @@
+#pragma once
+// The edge length the remeshing (adaptive_remeshing.h) aims at, anywhere on the surface: the
+// surface's own demands, not the input's tessellation (a CAD export's needles say nothing about
+// the part).
+
+#include "enhance/surface_constraints.h"
+
+#include "meshprep/core/mesh.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace meshprep::detail {
+
+struct SizingRules {
+  /// Absolute distance a chord may stray from a curved surface: the curvature's limit on the
+  /// length is the chord whose sagitta this is (L = sqrt(8 r tolerance)). Also the shortest length.
+  double chord_tolerance = 0;
+  /// At most this many faces (estimated over the input): the field is scaled up uniformly when it
+  /// asks for more.
+  std::size_t max_faces = 0;
+};
+
+/// The smallest of: the equilateral edge that tiles the input's area with its own number of faces
+/// (the density the user chose); at each interior edge that is no crease, the chord of the
+/// curvature's tolerance (the curvature is the edge's dihedral angle over the width of its two
+/// faces: a faceted cylinder's strips give 1 / r), sampled along the edge; and over each face of a
+/// closed mesh, the local thickness (the distance along its inward normal to the surface across: a
+/// plate needs edges no longer than it is thick, or its tets are flat), sampled at the centroids of
+/// the face's quarters, and theirs, until they are no longer than it. Each demand holds at its
+/// own point and relaxes with distance by half of it
+/// (Persson's gradation of 1.5 for mesh-size functions): h(x) = min over demands s of
+/// h_s + |x - s| / 2, never under the chord tolerance. Demands sit where they are measured, not
+/// at the corners of a needle that may be far away.
+class SizingField {
+ public:
+  /// `mesh` is the input (on its reference).
+  SizingField(const TriMesh& mesh, const SurfaceConstraints& constraints, const SizingRules& rules);
+  ~SizingField();
+  SizingField(const SizingField&) = delete;
+  SizingField& operator=(const SizingField&) = delete;
+
+  /// The target edge length at x.
+  double operator()(const Vec3& x) const;
+
+  double base_length() const { return base_ * scale_; }
+  double shortest() const { return shortest_ * scale_; }
+  /// Faces the field asks for over the input (after the cap).
+  std::size_t estimated_faces() const { return estimated_faces_; }
+  bool capped() const { return scale_ > 1; }
+
+ private:
+  double unscaled(const Vec3& x) const;
+  using Corners = std::array<Vec3, 3>;
+  /// The thickness under triangle `c` (part of input face `face`) at its centroid, as a demand;
+  /// then, if the triangle is longer than that and not much thinner than its parent piece, the
+  /// same for its four quarters (`parent_thickness` 0: a whole face).
+  void sample_thickness(const TriangleBvh& bvh, const Corners& c, const Vec3& inward, std::size_t face, double floor,
+                        std::size_t most_demands, double parent_thickness);
+  /// Faces the unscaled field asks for over triangle (a, b, c), cut into quarters until its pieces
+  /// are no longer than the field there or `most_evaluations` is reached.
+  double faces_over(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t& evaluations, std::size_t most_evaluations) const;
+
+  struct Demands;
+  std::unique_ptr<Demands> demands_;
+  double base_ = 0, shortest_ = 0, scale_ = 1;
+  std::size_t estimated_faces_ = 0;
+};
+
+}  // namespace meshprep::detail

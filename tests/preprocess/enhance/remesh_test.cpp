@@ -1,0 +1,162 @@
+// The enhancement's remeshing (adaptive_remeshing.h, sizing_field.h) on the tessellations a CAD
+// export makes: needles across a plane, strips around a cylinder, a thin slab of two triangles a
+// side. Issue 32's tests.
+#include "meshprep/preprocess/enhance/enhance.h"
+
+#include "meshprep/core/mesh.h"
+#include "meshprep/quality/surface_distance.h"
+#include "meshprep/quality/triangle_bvh.h"
+#include "meshprep/quality/triangle_metrics.h"
+
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace meshprep;
+using namespace meshprep::test;
+
+namespace {
+
+struct Shape {
+  double under_20 = 0;  // share of faces with a smallest angle under 20 degrees
+  double radius_ratio_p95 = 0;
+};
+
+Shape shape_of(const TriangleSoup& soup) {
+  std::vector<double> ratios;
+  std::size_t under = 0;
+  for (const TriangleShape& s : triangle_shapes(soup)) {
+    ratios.push_back(s.radius_ratio);
+    under += s.min_angle_deg < 20;
+  }
+  std::sort(ratios.begin(), ratios.end());
+  return {static_cast<double>(under) / static_cast<double>(ratios.size()), ratios[ratios.size() * 95 / 100]};
+}
+
+std::vector<double> edge_lengths(const TriMesh& mesh) {
+  std::vector<double> lengths;
+  for (const auto e : mesh.edges()) lengths.push_back(mesh.calc_edge_length(e));
+  std::sort(lengths.begin(), lengths.end());
+  return lengths;
+}
+
+// A 20 x 1 rectangle in the plane z = 0 whose long bottom side has 20 vertices and whose top side
+// has only its corners: a fan of needles from the top-left corner, as a CAD exporter writes a face.
+TriangleSoup needle_rectangle() {
+  TriangleSoup s;
+  constexpr int n = 20;
+  for (int i = 0; i <= n; ++i) s.points.emplace_back(20.0 * i / n, 0.0, 0.0);
+  const auto top_left = static_cast<std::uint32_t>(s.points.size());
+  s.points.emplace_back(0.0, 1.0, 0.0);
+  s.points.emplace_back(20.0, 1.0, 0.0);
+  for (std::uint32_t i = 0; i < n; ++i) s.triangles.push_back({top_left, i, i + 1});
+  s.triangles.push_back({top_left, n, top_left + 1});
+  return s;
+}
+
+// A closed box of 12 triangles, `thickness` thick and `side` wide.
+TriangleSoup slab(double side, double thickness) {
+  TriangleSoup s = cube(1.0);
+  for (Vec3& p : s.points) p = Vec3(p.x() * side, p.y() * side, p.z() * thickness);
+  return s;
+}
+
+}  // namespace
+
+TEST(Remesh, NeedlesAcrossAPlaneBecomeWellShapedInThePlane) {
+  const TriangleSoup input = needle_rectangle();
+  ASSERT_GT(shape_of(input).under_20, 0.9);
+  TriMesh mesh = mesh_from_soup(input);
+  const EnhanceResult result = enhance(mesh, nullptr);
+  EXPECT_TRUE(result.remeshed);
+  EXPECT_GT(result.faces_after, result.faces_before);
+  const TriangleSoup output = soup_from_mesh(mesh);
+  const Shape shape = shape_of(output);
+  EXPECT_LE(shape.under_20, 0.01);
+  EXPECT_LE(shape.radius_ratio_p95, 2.0);
+  // Exactly in the plane, and exactly on the rectangle's sides where on its border.
+  double area = 0;
+  for (const auto f : mesh.faces()) area += mesh.calc_face_area(f);
+  EXPECT_NEAR(area, 20.0, 1e-9);
+  for (const auto v : mesh.vertices()) {
+    const Vec3 p = to_eigen(mesh.point(v));
+    EXPECT_EQ(p.z(), 0.0);
+    if (mesh.is_boundary(v)) {
+      EXPECT_TRUE(p.x() == 0 || p.x() == 20 || p.y() == 0 || p.y() == 1) << p.transpose();
+    }
+  }
+  for (const Vec3& corner : {Vec3(0, 0, 0), Vec3(20, 0, 0), Vec3(0, 1, 0), Vec3(20, 1, 0)}) {
+    bool kept = false;
+    for (const auto v : mesh.vertices()) kept = kept || to_eigen(mesh.point(v)) == corner;
+    EXPECT_TRUE(kept) << "corner " << corner.transpose();
+  }
+}
+
+TEST(Remesh, CylinderStripsBecomeNearEquilateralWithinTheBound) {
+  // 48 strips 1 tall and 0.13 wide (smallest angle 7.5 degrees), caps fanned from one corner.
+  const TriangleSoup input = cylinder_with_fan_caps(48);
+  TriMesh mesh = mesh_from_soup(input);
+  const EnhanceResult result = enhance(mesh, nullptr);
+  EXPECT_TRUE(result.remeshed);
+  const TriangleSoup output = soup_from_mesh(mesh);
+  const Shape shape = shape_of(output);
+  EXPECT_LE(shape.under_20, 0.01);
+  EXPECT_LE(shape.radius_ratio_p95, 2.0);
+  const double diagonal = bounding_box(input).diagonal().norm();
+  DistanceParams sampling;
+  sampling.samples = 100000;
+  EXPECT_LE(surface_distance(output, input, sampling).hausdorff(), result.max_deviation * diagonal);
+  EXPECT_NEAR(signed_volume(output), signed_volume(input), 1e-3 * signed_volume(input));
+}
+
+TEST(Remesh, AThinSlabGetsEdgesAboutItsThickness) {
+  const double thickness = 0.25;
+  TriMesh mesh = mesh_from_soup(slab(4.0, thickness));
+  const EnhanceResult result = enhance(mesh, nullptr, [] {
+    EnhanceParams p;
+    p.remesh = EnhanceRemesh::On;  // two right triangles a side: nothing under 20 degrees
+    return p;
+  }());
+  EXPECT_TRUE(result.remeshed);
+  const std::vector<double> lengths = edge_lengths(mesh);
+  // The thickness is sampled no farther apart than it is, so the target between two samples is
+  // at most t (1 + 1/2 / sqrt(3)) (the field grows by half the distance, at most t / sqrt(3) to
+  // the nearest sample's centroid); edges are split above 4/3 of it.
+  EXPECT_LE(lengths[lengths.size() / 2], 1.1 * thickness);
+  EXPECT_LE(lengths.back(), 4.0 / 3.0 * (1 + 0.5 / std::sqrt(3.0)) * thickness);
+  // The slab's eight corners stay.
+  std::size_t corners = 0;
+  for (const auto v : mesh.vertices()) {
+    const Vec3 p = to_eigen(mesh.point(v));
+    corners += (p.x() == 0 || p.x() == 4) && (p.y() == 0 || p.y() == 4) && (p.z() == 0 || p.z() == thickness);
+  }
+  EXPECT_EQ(corners, 8u);
+}
+
+TEST(Remesh, TheSameFiguresScaledAndRotated) {
+  const TriangleSoup input = cylinder_with_fan_caps(48);
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  TriangleSoup turned = input;
+  for (Vec3& p : turned.points) p = 1e-3 * (rotation * p) + Vec3(5e-3, -2e-3, 1e-3);
+  TriMesh a = mesh_from_soup(input), b = mesh_from_soup(turned);
+  const EnhanceResult ra = enhance(a, nullptr), rb = enhance(b, nullptr);
+  // The bound is relative to the bounding box's diagonal, which the rotation changes (by 9 %
+  // here), and the axis-aligned cylinder's ties (rays through edges, equal flips) go other ways:
+  // both meet the goals, and the face counts agree; the radius ratio's p95 does not (1.56
+  // against 1.16 when this was written).
+  EXPECT_NEAR(static_cast<double>(rb.faces_after), static_cast<double>(ra.faces_after), 0.15 * static_cast<double>(ra.faces_after));
+  const Shape sa = shape_of(soup_from_mesh(a)), sb = shape_of(soup_from_mesh(b));
+  EXPECT_LE(sa.under_20, 0.01);
+  EXPECT_LE(sb.under_20, 0.01);
+  EXPECT_LE(sa.radius_ratio_p95, 2.0);
+  EXPECT_LE(sb.radius_ratio_p95, 2.0);
+  DistanceParams sampling;
+  sampling.samples = 100000;
+  EXPECT_LE(surface_distance(soup_from_mesh(b), turned, sampling).hausdorff(), rb.max_deviation * bounding_box(turned).diagonal().norm());
+}
