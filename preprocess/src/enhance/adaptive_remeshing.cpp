@@ -103,10 +103,17 @@ class Remesher {
     }
   }
 
-  // Puts a new Surface vertex (at its edge's midpoint) onto the reference, unless that would turn
-  // one of its faces: a thin part's far side may be the closest.
+  // Puts a new Surface vertex (at its edge's midpoint) onto the reference, unless the closest
+  // reference face faces another way or the move would turn one of its faces: across a thin part
+  // the far wall may be the closest (animation: splits that never shortened an edge ran to the
+  // face limit).
   void settle(VertexHandle m) {
-    const Vec3 onto = constraints_.project(m, point(mesh_, m));
+    const Vec3 middle = point(mesh_, m);
+    Vec3 normal = Vec3::Zero();
+    for (const auto f : mesh_.vf_range(m)) normal += to_eigen(mesh_.calc_face_normal(f));
+    if (constraints_.reference_normal(constraints_.closest_on_reference(middle).face).dot(normal) <= kMaxTurnCosine * normal.norm())
+      return;  // the closest point is on a wall across, not under the edge
+    const Vec3 onto = constraints_.project(m, middle);
     if (!turns_faces(m, onto)) mesh_.set_point(m, to_openmesh(onto));
   }
 

@@ -22,7 +22,7 @@ struct RemeshRules {
   /// (and that the removed vertex of a collapse must be within of the new faces).
   double max_deviation = 0;
   double target_min_angle_deg = 20;  ///< a flip may not make a face's smallest angle worse than this and than it was
-  std::size_t max_faces = 0;         ///< the splits stop at this many faces (0: no limit)
+  std::size_t max_faces = 0;         ///< the splits stop at this many faces, collapses pending (0: no limit)
 };
 
 struct RemeshCounts {

@@ -50,6 +50,8 @@ class SizingField {
   /// Faces the field asks for over the input (after the cap).
   std::size_t estimated_faces() const { return estimated_faces_; }
   bool capped() const { return scale_ > 1; }
+  /// Every length times `factor` (> 1: fewer faces).
+  void coarsen(double factor) { scale_ *= factor; }
 
  private:
   double unscaled(const Vec3& x) const;

@@ -86,7 +86,7 @@ struct EnhanceResult {
   /// (the input's own density, where nothing asks for less).
   double sizing_shortest = 0, sizing_base = 0;
   std::size_t sizing_faces = 0;         ///< the faces the sizing field asks for (estimated over the input)
-  bool sizing_capped = false;           ///< coarsened to stay within max_faces, or the splits stopped there
+  bool sizing_capped = false;           ///< coarsened to stay within max_faces
   std::size_t faces_before = 0, faces_after = 0;
   QualityTail before, after;
   double seconds = 0;
