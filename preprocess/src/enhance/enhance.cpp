@@ -161,20 +161,25 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   const TriangleSoup input = soup_from_mesh(mesh);
   const TriangleSoup moved_reference = reference ? near_origin.moved(*reference) : TriangleSoup();
   const TriangleSoup& surface = reference ? moved_reference : input;
+  const double diagonal = bounding_box(surface).diagonal().norm();
+  const double own = input_deviation(input, reference ? &surface : nullptr, diagonal);
+  double relative_deviation = kLoosest;
+  if (params.max_deviation)
+    relative_deviation = *params.max_deviation;
+  else if (own > kOnReference)
+    relative_deviation = std::min(own, kLoosest);
+  const double max_deviation = relative_deviation * diagonal;
+  // Auto remeshes a tessellation that lies on its reference (a CAD export, a scan as it is), not
+  // a simplified surface whose vertices the simplification placed off it (the decimated bunny's
+  // remeshing crossed itself, was taken back, and cost 11 s).
   const QualityTail input_tail = detail::measure_tail(mesh, params.target_min_angle_deg);
   const bool remeshing = params.remesh == EnhanceRemesh::On ||
-                         (params.remesh == EnhanceRemesh::Auto && input_tail.under_target_fraction > EnhanceParams::kRemeshAbove);
+                         (params.remesh == EnhanceRemesh::Auto && own <= kOnReference &&
+                          input_tail.under_target_fraction > EnhanceParams::kRemeshAbove);
   // Remeshing, the edges between planes are creases too (surface_constraints.h); taken back, the
   // features are found again as for any other input.
   std::optional<detail::SurfaceConstraints> features;
   features.emplace(mesh, surface, params.feature_angle_deg, remeshing);
-  const double diagonal = bounding_box(surface).diagonal().norm();
-  double relative_deviation = kLoosest;
-  if (params.max_deviation)
-    relative_deviation = *params.max_deviation;
-  else if (const double own = input_deviation(input, reference ? &surface : nullptr, diagonal); own > kOnReference)
-    relative_deviation = std::min(own, kLoosest);
-  const double max_deviation = relative_deviation * diagonal;
   const std::size_t allowed_intersections = find_self_intersections(input).count;
   const double min_angle_cosine = std::cos(params.target_min_angle_deg * M_PI / 180.0);
   // Ceres runs on one thread: with more, its cost sums depend on the thread count, so the LM steps,

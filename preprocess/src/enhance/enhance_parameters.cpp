@@ -22,8 +22,8 @@ const EnhanceParameters& enhance_parameters() {
       {"flips", "--flips,!--no-flips", "flip edges where moving vertices cannot help", {}},
       {"remesh", "--remesh",
        "remesh first to a sizing field from the surface (curvature, thickness, the input's density): split long "
-       "edges, collapse short ones, flip toward valence 6; auto: when more than " +
-           parameter_text(100 * EnhanceParams::kRemeshAbove) + " % of the faces are under the target angle",
+       "edges, collapse short ones, flip toward valence 6; auto: when the input lies on its reference and more "
+       "than " + parameter_text(100 * EnhanceParams::kRemeshAbove) + " % of its faces are under the target angle",
        {}},
       {"max_faces", "--max-faces", "the remeshing's faces at most (the sizing is coarsened to fit); 0: ten times the input's, at least 50000",
        {0, 1e12}}};

@@ -26,7 +26,8 @@
 namespace meshprep {
 
 /// When the enhancement remeshes first (adaptive_remeshing.h): always, never, or when the input
-/// has more than EnhanceParams::kRemeshAbove of its faces under the target angle.
+/// lies on its reference (none given, or the input itself) and has more than
+/// EnhanceParams::kRemeshAbove of its faces under the target angle.
 enum class EnhanceRemesh { Auto, On, Off };
 
 struct EnhanceParams {
