@@ -89,6 +89,7 @@ Action add_smooth_command(CLI::App& app) {
   add_parameter(*cmd, p.smoothing, o->params.smoothing);
   add_parameter(*cmd, p.relaxation, o->params.relaxation);
   add_parameter(*cmd, p.feature_angle_deg, o->params.feature_angle_deg);
+  add_parameter(*cmd, p.adaptive, o->params.adaptive);
   add_parameter(*cmd, p.preserve_volume, o->params.preserve_volume);
   add_samples_option(*cmd, o->samples);
   add_threads_option(*cmd, o->threads);

@@ -21,8 +21,9 @@
 # --threads 1. Writes one CSV row per mesh (CSV, default ./bench_corpus.csv, and the table beside it
 # as .md), then prints one Markdown table: median and worst of each figure for cad, corpus, meshes
 # (the worst with its mesh), counts of meshes, refusals and fem_ready.
-# Usage: [SETS="cad corpus meshes"] [LIMIT=N] [PIPELINE_TIMEOUT=600] bench/bench_corpus.sh [build-dir] [csv]
-#   LIMIT=N takes the first N meshes of each set (a trial run). About 47 minutes in full with
+# Usage: [SETS="cad corpus meshes"] [LIMIT=N] [PIPELINE_TIMEOUT=600] [ONLY=smooth] bench/bench_corpus.sh [build-dir] [csv]
+#   LIMIT=N takes the first N meshes of each set (a trial run). ONLY=smooth runs the input's quality
+#   and the smoothing rows only (no enhance, CGAL or pipeline; about 8 minutes with SETS="corpus meshes"). About 47 minutes in full with
 #   PIPELINE_TIMEOUT=180 (the CAD parts' pipelines are most of it: 8 of them time out).
 # shellcheck source-path=SCRIPTDIR
 source "$(dirname "$0")/bench_setup.sh" "${1:-}" .
@@ -34,7 +35,9 @@ python3 -c 'import numpy' 2> /dev/null || py=/usr/bin/python3  # a pyenv python 
 "$py" -c 'import numpy' 2> /dev/null || { echo "numpy is missing: the smoothing rows are skipped" >&2; py=; }
 
 peer=
-if [ -f /usr/include/CGAL/Polygon_mesh_processing/remesh.h ] && [ -f /usr/include/eigen3/Eigen/Core ]; then
+if [ "${ONLY:-}" = smooth ]; then
+  :  # smoothing rows only: no peer to compile
+elif [ -f /usr/include/CGAL/Polygon_mesh_processing/remesh.h ] && [ -f /usr/include/eigen3/Eigen/Core ]; then
   echo "compiling the CGAL isotropic remeshing peer (about 30 s)..." >&2
   g++ -O3 -DNDEBUG -DCGAL_EIGEN3_ENABLED -I/usr/include/eigen3 -std=c++17 -Wall -Wextra -Wno-maybe-uninitialized \
     "$root/bench/cgal_remesh_peer.cpp" -o "$work/cgal_remesh_peer" -lgmp -lmpfr && peer=$work/cgal_remesh_peer
@@ -75,7 +78,7 @@ for set in ${SETS:-cad corpus meshes}; do
     mkdir -p "$dir"
     echo "[$((SECONDS - start)) s] $set/$mesh" >&2
     run q "$bin" quality "$input" --json "$dir/q.json" --threads 1
-    run e "$bin" enhance "$input" -o "$dir/enhanced.off" --json "$dir/e.json" --threads 1
+    [ "${ONLY:-}" = smooth ] || run e "$bin" enhance "$input" -o "$dir/enhanced.off" --json "$dir/e.json" --threads 1
     if [ -n "$peer" ]; then
       run convert "$bin" convert "$input" "$dir/in.off"
       rc=0
@@ -83,8 +86,8 @@ for set in ${SETS:-cad corpus meshes}; do
       echo "$rc" > "$dir/c.rc"
       [ "$rc" != 0 ] || run cq "$bin" quality "$dir/cgal.off" --reference "$dir/in.off" --json "$dir/cq.json" --threads 1
     fi
-    run p "$bin" pipeline "$input" -o "$dir/pipeline" --json "$dir/p.json" --quiet --threads 1 \
-      --timeout "${PIPELINE_TIMEOUT:-600}"
+    [ "${ONLY:-}" = smooth ] || run p "$bin" pipeline "$input" -o "$dir/pipeline" --json "$dir/p.json" --quiet \
+      --threads 1 --timeout "${PIPELINE_TIMEOUT:-600}"
     rm -rf "$dir/pipeline"
     if [ -n "$py" ] && [ "$set" != cad ] && [ "$(field "$dir/q.json" closed)" = True ] &&
       [ "$(field "$dir/q.json" self_intersections)" = 0 ]; then

@@ -1,6 +1,7 @@
 #include "smooth/rbf_smoothing.h"
 
 #include "smooth/filtered_normals.h"
+#include "smooth/noise_adaptive.h"
 #include "smooth/smoothing_neighbourhoods.h"
 #include "shared/spatial_order.h"
 
@@ -10,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <optional>
@@ -31,6 +33,11 @@ constexpr std::size_t kFewestSites = 14;
 // times the median fit of the vertices on no crease (measured: at 1.5 about 100 noise-crease
 // vertices of the noisy bunny stay, at 3 fandisk loses 45 of its real crease vertices).
 constexpr double kCreaseResidual = 2.0;
+// The narrow fit beside the wide one (noise_adaptive.h): the nearest sites, about 2 rings, and a
+// Gaussian of this many edges. On coarse meshes it follows what 4 rings round off, and its moves
+// measure the noise. Measured on the 23 closed meshes (docs/smoothing.md): 24 sites / 1.25 edges.
+constexpr std::size_t kNarrowSites = 24;
+constexpr double kNarrowBandwidth = 1.25;
 
 Vec3 point(const TriMesh& mesh, TriMesh::VertexHandle v) { return to_eigen(mesh.point(v)); }
 
@@ -40,21 +47,50 @@ Vec3 point(const TriMesh& mesh, TriMesh::VertexHandle v) { return to_eigen(mesh.
 struct LocalSurface {
   LocalHeightMap map;
   double residual = 0;
+  detail::FitWeights weights;  // of the fitted height at p (noise_adaptive.h)
 };
 
-LocalSurface fit_local_surface(const Vec3& p, std::vector<Vec3> sites, double mean_edge, double smoothing) {
+LocalSurface fit_local_surface(const Vec3& p, std::vector<Vec3> sites, double mean_edge, double smoothing,
+                               double bandwidth = kBandwidth) {
   sites.push_back(p);
-  const double inverse_variance = 1 / std::pow(kBandwidth * mean_edge, 2);
+  const double inverse_variance = 1 / std::pow(bandwidth * mean_edge, 2);
   Eigen::VectorXd weights(static_cast<Eigen::Index>(sites.size()));
   for (std::size_t j = 0; j < sites.size(); ++j)
     weights[static_cast<Eigen::Index>(j)] = std::exp(-0.5 * (sites[j] - p).squaredNorm() * inverse_variance);
-  LocalSurface surface{LocalHeightMap(sites, HeightMapPolynomial::cubic, smoothing, weights)};
+  LocalSurface surface{LocalHeightMap(sites, HeightMapPolynomial::cubic, smoothing, weights), 0, {}};
   double weighted = 0;
   for (std::size_t j = 0; j < sites.size(); ++j) {
     const Vec3 local = surface.map.frame().to_local(sites[j]);
     weighted += weights[static_cast<Eigen::Index>(j)] * std::pow(local.z() - surface.map.spline().evaluate(local.x(), local.y()), 2);
   }
   surface.residual = std::sqrt(weighted / weights.sum());
+  // The fitted height at p is linear in the sites' heights, sum_j a_j z_j (weighted least squares):
+  // a_j = w_j x_j^T (X^T W X)^-1 x_p. Its own coefficient (the last site is p) and sum of squares
+  // give the share of p's noise the fit keeps and the variance of its value.
+  const Vec3 centre = surface.map.frame().to_local(p);
+  const double scale = 1 / mean_edge;
+  auto basis = [&](const Vec3& q) {
+    const double x = (q.x() - centre.x()) * scale, y = (q.y() - centre.y()) * scale;
+    Eigen::Matrix<double, 10, 1> b;
+    b << 1, x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+    return b;
+  };
+  Eigen::Matrix<double, 10, 10> normal = Eigen::Matrix<double, 10, 10>::Zero();
+  std::vector<Eigen::Matrix<double, 10, 1>> rows(sites.size());
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    rows[j] = basis(surface.map.frame().to_local(sites[j]));
+    normal.noalias() += weights[static_cast<Eigen::Index>(j)] * rows[j] * rows[j].transpose();
+  }
+  Eigen::Matrix<double, 10, 1> at_p = Eigen::Matrix<double, 10, 1>::Zero();
+  at_p[0] = 1;
+  const Eigen::Matrix<double, 10, 1> c = normal.ldlt().solve(at_p);
+  double sum2 = 0, own = 0;
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    const double a = weights[static_cast<Eigen::Index>(j)] * rows[j].dot(c);
+    sum2 += a * a;
+    if (j + 1 == sites.size()) own = a;
+  }
+  surface.weights = {own, sum2};
   return surface;
 }
 
@@ -96,14 +132,22 @@ std::vector<Vec3> rbf_smoothing_step(const TriMesh& mesh, const SmoothParams& pa
   std::vector<std::size_t> creases(n, 0);
   constexpr double kUnfitted = -1;
   std::vector<double> residual(n, kUnfitted);
+  double noise = 0;
+  std::size_t not_moved = 0;
   std::atomic<std::size_t> feature_line{0}, corners{0}, boundary{0}, unfitted{0}, noise_creases{0};
   const VertexGraph graph = detail::vertex_graph(mesh, features);
+  // Where the wide (params.neighbors, kBandwidth) and the narrow fits put each vertex.
+  std::array<detail::MoveProposal, 2> proposals{detail::MoveProposal(n), detail::MoveProposal(n)};
+  auto propose = [&](std::size_t i, const Vec3& target, const LocalSurface& surface, const Vec3& p, int which) {
+    proposals[static_cast<std::size_t>(which)].set(i, target, (surface.map.project(p) - p).dot(graph.normal[i]), surface.weights);
+  };
   // The local surface of vertex i through `neighbours` (v excluded), if they hold one.
-  auto fitted = [&](std::size_t i, std::vector<Vec3> neighbours, const Ring& ring) -> std::optional<LocalSurface> {
+  auto fitted = [&](std::size_t i, std::vector<Vec3> neighbours, const Ring& ring,
+                    double bandwidth = kBandwidth) -> std::optional<LocalSurface> {
     const TriMesh::VertexHandle v(static_cast<int>(i));
     if (neighbours.size() + 1 < kFewestSites) return std::nullopt;
     try {
-      return fit_local_surface(point(mesh, v), std::move(neighbours), ring.mean_edge, params.smoothing);
+      return fit_local_surface(point(mesh, v), std::move(neighbours), ring.mean_edge, params.smoothing, bandwidth);
     } catch (const InvalidInput&) {  // sites on one cubic curve, or coinciding: no surface
       return std::nullopt;
     }
@@ -140,13 +184,29 @@ std::vector<Vec3> rbf_smoothing_step(const TriMesh& mesh, const SmoothParams& pa
     for (const auto e : mesh.ve_range(v)) creases[i] += features.crease[static_cast<std::size_t>(e.idx())];
     if (creases[i] > 0) return;
     const Ring ring = ring_of(mesh, v);
-    const std::optional<LocalSurface> surface =
-        fitted(i, detail::nearby_vertices(mesh, graph, static_cast<std::uint32_t>(i), cos_limit, false, params.neighbors), ring);
+    std::vector<Vec3> sites = detail::nearby_vertices(mesh, graph, static_cast<std::uint32_t>(i), cos_limit, false, params.neighbors);
+    const std::optional<LocalSurface> surface = fitted(i, sites, ring);
     if (!surface) {
       ++unfitted;
       return;
     }
-    if (place(i, onto_surface(*surface, moved[i], ring, params.relaxation), ring)) residual[i] = surface->residual;
+    const Vec3 p = point(mesh, v);
+    if (place(i, onto_surface(*surface, moved[i], ring, params.relaxation), ring)) {
+      residual[i] = surface->residual;
+      if (!params.adaptive) return;
+      propose(i, moved[i], *surface, p, 0);
+      propose(i, moved[i], *surface, p, 1);  // unless a narrow fit is found
+      // The narrow fit: the kNarrowSites nearest sites, a Gaussian of kNarrowBandwidth edges.
+      if (sites.size() > kNarrowSites) {
+        std::nth_element(sites.begin(), sites.begin() + static_cast<std::ptrdiff_t>(kNarrowSites), sites.end(),
+                         [&](const Vec3& a, const Vec3& b) { return (a - p).squaredNorm() < (b - p).squaredNorm(); });
+        sites.resize(kNarrowSites);
+      }
+      const std::optional<LocalSurface> narrow = fitted(i, sites, ring, kNarrowBandwidth);
+      if (!narrow) return;
+      const Vec3 target = onto_surface(*narrow, p, ring, params.relaxation);
+      if ((target - p).norm() <= ring.mean_edge) propose(i, target, *narrow, p, 1);
+    }
   });
 
   // 2. What one surface leaves unexplained where there is no crease: the noise level.
@@ -175,7 +235,8 @@ std::vector<Vec3> rbf_smoothing_step(const TriMesh& mesh, const SmoothParams& pa
         fitted(i, detail::nearby_vertices(mesh, graph, static_cast<std::uint32_t>(i), -1.0, true, params.neighbors), ring);
     if (across && across->residual < kCreaseResidual * noise_level) {
       ++noise_creases;
-      place(i, onto_surface(*across, moved[i], ring, params.relaxation), ring);
+      if (place(i, onto_surface(*across, moved[i], ring, params.relaxation), ring))
+        for (int which = 0; which < 2; ++which) propose(i, moved[i], *across, point(mesh, v), which);
       return;
     }
     if (creases[i] != 2) {
@@ -193,9 +254,22 @@ std::vector<Vec3> rbf_smoothing_step(const TriMesh& mesh, const SmoothParams& pa
     }
     Vec3 x = moved[i];
     for (int round = 0; round < 4; ++round) x = second->map.project(first->map.project(x));
-    if (place(i, x, ring)) ++feature_line;
+    if (place(i, x, ring)) {
+      ++feature_line;
+      // Both sides' fits moved it: its own move is the whole move, its weights the first side's.
+      for (std::size_t which = 0; which < 2; ++which)
+        proposals[which].set(i, x, (x - point(mesh, v)).dot(graph.normal[i]), first->weights);
+    }
   });
-  counts = {feature_line, corners, boundary, unfitted, noise_creases};
+  if (params.adaptive) {
+    // 4. How much of which fit each vertex takes, from the noise the mesh shows.
+    std::vector<Vec3> points(n);
+    for (std::size_t i = 0; i < n; ++i) points[i] = point(mesh, TriMesh::VertexHandle(static_cast<int>(i)));
+    const detail::NoiseAdaptiveCounts adapted = detail::choose_moves(points, graph, proposals, moved);
+    noise = adapted.noise;
+    not_moved = adapted.not_moved;
+  }
+  counts = {feature_line, corners, boundary, unfitted, noise_creases, not_moved, noise};
   return moved;
 }
 

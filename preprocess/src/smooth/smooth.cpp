@@ -83,6 +83,8 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
       result.noise_crease_vertices = counts.noise_creases;
       result.boundary_vertices = counts.boundary;
       result.unfitted_vertices = counts.unfitted;
+      result.not_moved_vertices = counts.not_moved;
+      result.noise_level = counts.noise;
       if (params.progress) params.progress(static_cast<double>(i + 1) / static_cast<double>(params.iterations));
     }
   }

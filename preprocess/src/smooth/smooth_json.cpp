@@ -19,11 +19,14 @@ nlohmann::ordered_json to_json(const SmoothResult& result, const SmoothParams& p
     json["smoothing"] = std::isinf(params.smoothing) ? Json("inf") : Json(params.smoothing);
     json["relaxation"] = params.relaxation;
     json["feature_angle_deg"] = params.feature_angle_deg;
+    json["adaptive"] = params.adaptive;
+    json["noise_level"] = result.noise_level;
     json["noise_crease_vertices"] = result.noise_crease_vertices;
     json["vertices_kept"] = {{"corners", result.corner_vertices},
                              {"boundary", result.boundary_vertices},
                              {"unfitted", result.unfitted_vertices},
-                             {"undone_for_self_intersections", result.undone_vertices}};
+                             {"undone_for_self_intersections", result.undone_vertices},
+                             {"not_moved", result.not_moved_vertices}};
     json["feature_line_vertices"] = result.feature_line_vertices;
   }
   json["preserve_volume"] = params.preserve_volume;

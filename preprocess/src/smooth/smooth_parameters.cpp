@@ -24,6 +24,11 @@ const SmoothParameters& smooth_parameters() {
        {0, 1}},
       {"feature_angle_deg", "--feature-angle",
        "rbf: edges with a larger dihedral angle (degrees) are creases, kept sharp; 180 = none", {0, 180, true, false}},
+      {"adaptive", "--adaptive,!--no-adaptive",
+       "rbf: each vertex moves as far as the noise the mesh shows makes worthwhile, onto a 4-ring or a "
+       "2-ring fit, or stays (never more than 2 noise levels along its normal); --no-adaptive moves every "
+       "vertex onto its 4-ring fit",
+       {}},
       {"preserve_volume", "--preserve-volume",
        "closed surfaces: offset the result along its normals so that the enclosed volume is unchanged", {}}};
   return parameters;

@@ -9,7 +9,7 @@
 namespace meshprep {
 
 struct SmoothParameters {
-  ParameterInfo method, iterations, neighbors, smoothing, relaxation, feature_angle_deg, preserve_volume;
+  ParameterInfo method, iterations, neighbors, smoothing, relaxation, feature_angle_deg, adaptive, preserve_volume;
 };
 
 const SmoothParameters& smooth_parameters();
