@@ -20,8 +20,7 @@ using HalfedgeHandle = TriMesh::HalfedgeHandle;
 // so that neither operation's result is at once the other's candidate.
 constexpr double kSplitAbove = 4.0 / 3.0;
 constexpr double kCollapseBelow = 4.0 / 5.0;
-// A sweep of splits or collapses is repeated while it changes something, at most this often
-// (each split halves an edge: ten sweeps shorten one a thousandfold).
+// A sweep of collapses is repeated while it removes something, at most this often.
 constexpr int kMaxSweeps = 10;
 // A move or collapse may turn a face by at most 60 degrees (as the enhancement's other guards).
 constexpr double kMaxTurnCosine = 0.5;
@@ -60,7 +59,8 @@ class Remesher {
   }
   double target(VertexHandle a, VertexHandle b) const { return 0.5 * (mesh_.property(size_, a) + mesh_.property(size_, b)); }
 
-  // Each split adds two faces, each collapse removes two (boundary ones one: an upper bound).
+  // The faces now: each split adds two, each collapse removes two (one each on the boundary: an
+  // estimate there).
   std::size_t live_faces() const { return faces_at_start_ + 2 * counts_.splits - std::min(2 * counts_.collapses, faces_at_start_ + 2 * counts_.splits); }
 
   void measure_size(VertexHandle v) { mesh_.property(size_, v) = sizing_(point(mesh_, v)); }
