@@ -222,6 +222,7 @@ std::vector<Key> smooth_keys(PipelineConfig::Smooth& s) {
   keys.push_back(number_or_inf("smooth", info.smoothing, p.smoothing));
   keys.push_back(number("smooth", info.relaxation, p.relaxation));
   keys.push_back(number("smooth", info.feature_angle_deg, p.feature_angle_deg));
+  keys.push_back(flag("smooth", info.adaptive, p.adaptive));
   keys.push_back(flag("smooth", info.preserve_volume, p.preserve_volume));
   return keys;
 }
@@ -236,6 +237,8 @@ std::vector<Key> enhance_keys(PipelineConfig::Enhance& e) {
   keys.push_back(number("enhance", info.target_min_angle_deg, p.target_min_angle_deg));
   keys.push_back(number("enhance", info.feature_angle_deg, p.feature_angle_deg));
   keys.push_back(flag("enhance", info.flips, p.flips));
+  keys.push_back(choice("enhance", info.remesh.key, p.remesh, enhance_remesh_modes(), info.remesh.help));
+  keys.push_back(count("enhance", info.max_faces, p.max_faces));
   return keys;
 }
 
