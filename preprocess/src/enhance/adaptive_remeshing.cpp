@@ -118,16 +118,7 @@ class Remesher {
   }
 
   // Whether moving v to x turns one of its faces by more than kMaxTurnCosine allows (or flattens it).
-  bool turns_faces(VertexHandle v, const Vec3& x) const {
-    for (const auto h : mesh_.voh_range(v)) {
-      if (!mesh_.face_handle(h).is_valid()) continue;
-      const Vec3 b = point(mesh_, mesh_.to_vertex_handle(h));
-      const Vec3 c = point(mesh_, mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h)));
-      const Vec3 before = area_normal(point(mesh_, v), b, c), after = area_normal(x, b, c);
-      if (!(after.dot(before) > kMaxTurnCosine * after.norm() * before.norm())) return true;
-    }
-    return false;
-  }
+  bool turns_faces(VertexHandle v, const Vec3& x) const { return vertex_move(mesh_, v, x, kMaxTurnCosine, HeightField{}).turns; }
 
   void collapse_short_edges() {
     for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {

@@ -162,7 +162,9 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   const TriangleSoup moved_reference = reference ? near_origin.moved(*reference) : TriangleSoup();
   const TriangleSoup& surface = reference ? moved_reference : input;
   const double diagonal = bounding_box(surface).diagonal().norm();
-  const double own = input_deviation(input, reference ? &surface : nullptr, diagonal);
+  // The input's own distance from the reference: the automatic bound, and whether auto remeshes.
+  const bool needs_own = !params.max_deviation || params.remesh == EnhanceRemesh::Auto;
+  const double own = needs_own ? input_deviation(input, reference ? &surface : nullptr, diagonal) : 0;
   double relative_deviation = kLoosest;
   if (params.max_deviation)
     relative_deviation = *params.max_deviation;
