@@ -125,11 +125,12 @@ TEST(Remesh, AThinSlabGetsEdgesAboutItsThickness) {
   }());
   EXPECT_TRUE(result.remeshed);
   const std::vector<double> lengths = edge_lengths(mesh);
-  // The thickness is sampled no farther apart than it is, so the target between two samples is
-  // at most t (1 + 1/2 / sqrt(3)) (the field grows by half the distance, at most t / sqrt(3) to
-  // the nearest sample's centroid); edges are split above 4/3 of it.
+  // The thickness is sampled no farther apart than it is, so a point of the slab is at most
+  // t / sqrt(3) along the faces from the nearest sample's centroid, and t / 2 across them (the
+  // middle of a side): the target is at most t (1 + 1/2 sqrt(1/3 + 1/4)) (the field grows by half
+  // the distance); edges are split above 4/3 of it.
   EXPECT_LE(lengths[lengths.size() / 2], 1.1 * thickness);
-  EXPECT_LE(lengths.back(), 4.0 / 3.0 * (1 + 0.5 / std::sqrt(3.0)) * thickness);
+  EXPECT_LE(lengths.back(), 4.0 / 3.0 * (1 + 0.5 * std::sqrt(1.0 / 3.0 + 1.0 / 4.0)) * thickness);
   // The slab's eight corners stay.
   std::size_t corners = 0;
   for (const auto v : mesh.vertices()) {

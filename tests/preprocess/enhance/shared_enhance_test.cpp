@@ -63,7 +63,15 @@ void expect_valid(const Enhanced& e) {
   EXPECT_TRUE(e.output.manifold);
   EXPECT_EQ(e.output.genus, e.input.genus);
   EXPECT_LE(e.output.self_intersections, e.input_intersections);
-  EXPECT_LE(std::abs(static_cast<double>(e.output.faces) / static_cast<double>(e.input_faces) - 1), 0.02);
+  if (e.result.remeshed) {
+    // Remeshed edges lie between 4/5 and 4/3 of the sizing field's target, so the faces are within
+    // (3/4)^2 and (5/4)^2 of the field's equilateral estimate, and relaxation moves them about
+    // (1.08 to 1.64 times on the CAD parts and corpus).
+    EXPECT_GE(static_cast<double>(e.output.faces), 0.5 * static_cast<double>(e.result.sizing_faces));
+    EXPECT_LE(static_cast<double>(e.output.faces), 2.0 * static_cast<double>(e.result.sizing_faces));
+  } else {
+    EXPECT_LE(std::abs(static_cast<double>(e.output.faces) / static_cast<double>(e.input_faces) - 1), 0.02);
+  }
 }
 
 #define SKIP_WITHOUT_SHARED_DATA()                                       \
