@@ -21,6 +21,11 @@ const double kStraightCosine = std::cos(150.0 * M_PI / 180.0);  // a run turns b
 // creases bend by less, and keep their vertices free to slide (TetGen 5.5 degrees, 4.4 when
 // every turning vertex was fixed).
 const double kCornerCosine = std::cos(120.0 * M_PI / 180.0);
+// Remeshing a tessellation that lies on its reference (a CAD export), a crease turning by more
+// than 33 degrees is a corner as well: the export's crease lines are the part's edges, and a
+// vertex sliding past such a kink cut it by 1.07e-3 of the diagonal (example007, 47 degrees),
+// above the 1e-3 goal. 33 is no regular polygon's turn (360 / n), where round-off would decide.
+const double kRemeshCornerCosine = std::cos((180.0 - 33.0) * M_PI / 180.0);
 constexpr double kShortestCrease = 5;                             // median edge lengths
 
 Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
@@ -118,7 +123,7 @@ SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& refere
     // A corner (three or more feature edges, or two that turn sharply) stays; so does a line's end.
     if (!mesh.is_manifold(v) || (degree != 0 && degree != 2)) role = VertexRole::Fixed;
     else if (degree == 2)
-      role = straight_through(mesh, v, edges_of[static_cast<std::size_t>(v.idx())], kCornerCosine) ? VertexRole::Line
+      role = straight_through(mesh, v, edges_of[static_cast<std::size_t>(v.idx())], planar_creases ? kRemeshCornerCosine : kCornerCosine) ? VertexRole::Line
                                                                                                     : VertexRole::Fixed;
     mesh_.property(role_, v) = role;
     mesh_.property(line_, v) = -1;

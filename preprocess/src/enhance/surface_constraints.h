@@ -30,8 +30,9 @@ class SurfaceConstraints {
  public:
   /// `mesh` and `reference` must outlive this object, which adds its properties to `mesh` and
   /// removes them when destroyed. With `planar_creases`, a sharp edge between two faces that each
-  /// have a neighbour in their own plane is a crease however short its run: a CAD tessellation's
-  /// (one the enhancement remeshes).
+  /// have a neighbour in their own plane is a crease however short its run, and a crease vertex
+  /// turning by more than 33 degrees is a corner: a CAD tessellation's (one the enhancement
+  /// remeshes).
   SurfaceConstraints(TriMesh& mesh, const TriangleSoup& reference, double feature_angle_deg, bool planar_creases = false);
   ~SurfaceConstraints();
   SurfaceConstraints(const SurfaceConstraints&) = delete;
