@@ -1,6 +1,7 @@
 #include "meshprep/preprocess/repair/repair.h"
 
 #include "repair/orient_components.h"
+#include "repair/split_nonmanifold.h"
 #include "repair/weld_vertices.h"
 #include "shared/edge_lengths.h"
 
@@ -22,6 +23,9 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.degenerate_faces = weld.degenerate_faces;
   result.duplicate_faces = weld.duplicate_faces;
   result.unused_vertices = weld.unused_vertices;
+  const detail::SplitCounts split = detail::split_nonmanifold(surface);
+  result.split_edges = split.split_edges;
+  result.split_vertices = split.split_vertices;
   const detail::OrientCounts orient = detail::orient_components(surface);
   result.components = orient.components;
   result.flipped_faces = orient.flipped_faces;

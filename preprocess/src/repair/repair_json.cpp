@@ -11,6 +11,8 @@ nlohmann::ordered_json to_json(const RepairResult& result) {
   json["degenerate_faces"] = result.degenerate_faces;
   json["duplicate_faces"] = result.duplicate_faces;
   json["unused_vertices"] = result.unused_vertices;
+  json["split_edges"] = result.split_edges;
+  json["split_vertices"] = result.split_vertices;
   json["components"] = result.components;
   json["flipped_faces"] = result.flipped_faces;
   json["inverted_components"] = result.inverted_components;

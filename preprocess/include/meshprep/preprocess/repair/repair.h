@@ -1,15 +1,17 @@
 #pragma once
 /// \file repair.h
-/// The repair stage, first steps (issue 33): a dirty surface's connectivity mended without moving
-/// the surface. In order:
+/// The repair stage (issue 33): a dirty surface mended without moving the input's vertices. In order:
 /// 1. weld: vertices closer than weld_tolerance x the median edge length become one (the lowest
 ///    index of each cluster, where it is: welding never moves a vertex);
 /// 2. faces that name a vertex twice after welding, and faces repeating another's three vertices,
 ///    are removed; vertices no face uses are dropped;
-/// 3. orientation: each edge-connected component is made consistent from its first face, across
+/// 3. non-manifold edges and vertices are split: each sheet meeting there gets its own copy of the
+///    vertices; the faces on an edge with more than two are paired by their angles around it, so
+///    two boxes touching along an edge stay two closed boxes;
+/// 4. orientation: each edge-connected component is made consistent from its first face, across
 ///    its manifold edges, and a closed component enclosing negative volume is turned outward.
-/// Holes, non-manifold edges and self-intersections are not mended yet: the caller checks the
-/// result (fem's check_fem_readiness) and refuses what is left.
+/// Holes and self-intersections are not mended yet: the caller checks the result (fem's
+/// check_fem_readiness) and refuses what is left.
 
 #include "meshprep/core/mesh.h"
 
@@ -32,6 +34,8 @@ struct RepairResult {
   std::size_t degenerate_faces = 0;     ///< removed: a vertex twice after welding
   std::size_t duplicate_faces = 0;      ///< removed: another face's three vertices
   std::size_t unused_vertices = 0;      ///< dropped: no face uses them
+  std::size_t split_edges = 0;          ///< non-manifold edges (more than two faces) split
+  std::size_t split_vertices = 0;       ///< vertices given a copy per sheet (bow-ties, split edges' ends)
   std::size_t flipped_faces = 0;        ///< turned to agree with their component's first face
   std::size_t inverted_components = 0;  ///< closed components turned outward (every face flipped)
   std::size_t components = 0;           ///< edge-connected components
