@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -63,16 +65,45 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
     if (border.emplace(from, Border{to, e.face}).second) starts.push_back(from);
   }
   if (border.empty()) return {};  // closed: the common case costs one sort
+  // Copies of one point on the border are split_nonmanifold's, of a bow-tie on a rim: each answers
+  // to the lowest, and a loop that reaches one copy leaves from another's border edge, across the
+  // empty sector between their fans, so that the patches fill the sectors and the copies make one
+  // fan again (repair.cpp welds them back). With two fans the other copy is the neighbour across
+  // the sector; with more, the first free one is taken, which may not be (then it stays split).
+  std::vector<std::uint32_t> lowest(soup.points.size());
+  std::iota(lowest.begin(), lowest.end(), std::uint32_t{0});
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> copies;
+  std::vector<std::uint32_t> by_point(starts);
+  std::sort(by_point.begin(), by_point.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Vec3 &p = soup.points[a], &q = soup.points[b];
+    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
+  });
+  for (std::size_t i = 1; i < by_point.size(); ++i)
+    if (soup.points[by_point[i]] == soup.points[by_point[i - 1]]) {
+      lowest[by_point[i]] = lowest[by_point[i - 1]];
+      auto& same = copies[lowest[by_point[i]]];
+      if (same.empty()) same.push_back(by_point[i - 1]);
+      same.push_back(by_point[i]);
+    }
   std::unordered_set<std::uint64_t> edges;
   std::vector<std::vector<std::uint32_t>> neighbours(soup.points.size());
   for (std::size_t i = 0; i < uses.size(); ++i) {
     if (i > 0 && uses[i - 1].key == uses[i].key) continue;
-    edges.insert(uses[i].key);
-    neighbours[uses[i].lo()].push_back(uses[i].hi());
-    neighbours[uses[i].hi()].push_back(uses[i].lo());
+    const std::uint32_t a = lowest[uses[i].lo()], b = lowest[uses[i].hi()];
+    edges.insert(edge_key(a, b));
+    neighbours[a].push_back(b);
+    neighbours[b].push_back(a);
   }
   std::vector<RepairHole> holes;
   std::unordered_set<std::uint32_t> walked;
+  // Where the walk goes on from `v`: another copy of v's point whose gap is not walked yet, else v.
+  const auto leave = [&](std::uint32_t v) {
+    const auto found = copies.find(lowest[v]);
+    if (found != copies.end())
+      for (const std::uint32_t copy : found->second)
+        if (copy != v && !walked.count(copy)) return copy;
+    return v;
+  };
   for (const std::uint32_t start : starts) {
     if (walked.count(start)) continue;
     HoleRim rim;
@@ -81,13 +112,13 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
     do {
       walked.insert(v);
       const Border& b = border.at(v);
-      rim.vertices.push_back(v);
+      rim.vertices.push_back(lowest[v]);
       rim.face_normals.push_back(unit_normal(soup, b.face));
       hole.rim_length += (soup.points[b.to] - soup.points[v]).norm();
-      v = b.to;
-    } while (v != start && border.count(v) && !walked.count(v));
+      v = leave(b.to);
+    } while (border.count(v) && !walked.count(v));
     hole.rim_vertices = rim.vertices.size();
-    if (v != start)
+    if (lowest[v] != lowest[start])
       hole.left_open = "its border does not close into a loop (a non-manifold or inconsistently oriented border)";
     else if (hole.rim_length > max_rim_length)
       hole.left_open = "its rim is longer than max_hole";

@@ -27,7 +27,7 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.degenerate_faces = weld.degenerate_faces;
   result.duplicate_faces = weld.duplicate_faces;
   result.unused_vertices = weld.unused_vertices;
-  const detail::SplitCounts split = detail::split_nonmanifold(surface);
+  detail::SplitCounts split = detail::split_nonmanifold(surface);
   result.split_edges = split.split_edges;
   result.split_vertices = split.split_vertices;
   const detail::OrientCounts orient = detail::orient_components(surface);
@@ -36,6 +36,14 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.inverted_components = orient.inverted_components;
   result.holes = detail::fill_holes(surface, params.max_hole * bbox_diagonal(surface));
   for (const RepairHole& hole : result.holes) ++(hole.filled ? result.filled_holes : result.open_holes);
+  // A bow-tie on a hole's rim is one fan again once the patch joins its fans (fill_holes.cpp):
+  // its copies are welded back, and what is still not manifold is split again.
+  if (result.split_vertices > 0 && result.filled_holes > 0) {
+    detail::weld_vertices(surface, 0);
+    split = detail::split_nonmanifold(surface);
+    result.split_edges = split.split_edges;
+    result.split_vertices = split.split_vertices;
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -50,7 +50,7 @@ TEST(RepairSplit, ABowTieOfTwoTrianglesBecomesTwoSheets) {
   EXPECT_EQ(r.split_edges, 0u);
   EXPECT_EQ(soup.points.size(), 6u);
   EXPECT_TRUE(analyze_topology(soup).manifold);
-  EXPECT_EQ(r.open_holes, 2u);  // each triangle's border is 1.2 x the diagonal: a sheet, not a hole
+  EXPECT_EQ(r.open_holes, 1u);  // the two borders through the point, 2.4 x the diagonal: a sheet's
 }
 
 TEST(RepairSplit, TwoTetrahedraOnOneVertexBecomeTwoClosedSheets) {
@@ -95,6 +95,32 @@ TEST(RepairHoles, ASquareHoleInAPlaneIsFilledInThePlane) {
   EXPECT_TRUE(filled->faired);
   EXPECT_NEAR(filled->patch_area, 36.0, 1e-12 * 36);
   EXPECT_EQ(filled->plane_distance, 0.0);
+  for (const Vec3& p : soup.points) EXPECT_EQ(p.z(), 0.0);
+  const Topology t = analyze_topology(soup);
+  EXPECT_TRUE(t.manifold && t.oriented);
+  EXPECT_EQ(t.boundary_loops, 1u);
+}
+
+// Two 2 x 2 holes touching at the corner (11, 11) make it a bow-tie: the split gives each fan a
+// copy, each hole's walk enters the point through one copy and leaves through the other, and once
+// the two patches fill the sectors between the fans the copies are one vertex again.
+TEST(RepairHoles, TwoHolesTouchingAtACornerMakeTheCornerManifold) {
+  TriangleSoup soup = without(test::grid(24), [](const Vec3& c) {
+    const auto in = [](double x, double lo) { return x > lo && x < lo + 2; };
+    return (in(c.x(), 9) && in(c.y(), 9)) || (in(c.x(), 11) && in(c.y(), 11));
+  });
+  ASSERT_FALSE(analyze_topology(soup).manifold);
+  RepairParams params;
+  params.max_hole = 1.0;
+  const RepairResult r = repair(soup, params);
+  ASSERT_EQ(r.holes.size(), 3u);
+  ASSERT_EQ(r.filled_holes, 2u);
+  for (const RepairHole& h : r.holes)
+    if (h.filled) {
+      EXPECT_EQ(h.rim_vertices, 8u);
+      EXPECT_NEAR(h.patch_area, 4.0, 1e-12 * 4);
+    }
+  EXPECT_EQ(r.split_vertices, 0u);
   for (const Vec3& p : soup.points) EXPECT_EQ(p.z(), 0.0);
   const Topology t = analyze_topology(soup);
   EXPECT_TRUE(t.manifold && t.oriented);

@@ -7,7 +7,8 @@
 ///    are removed; vertices no face uses are dropped;
 /// 3. non-manifold edges and vertices are split: each sheet meeting there gets its own copy of the
 ///    vertices; the faces on an edge with more than two are paired by their angles around it, so
-///    two boxes touching along an edge stay two closed boxes;
+///    two boxes touching along an edge stay two closed boxes (a bow-tie on a hole's rim is joined
+///    again by the hole's patch, step 5);
 /// 4. orientation: each edge-connected component is made consistent from its first face, across
 ///    its manifold edges, and a closed component enclosing negative volume is turned outward;
 /// 5. holes: each boundary loop no longer than max_hole x the bounding box's diagonal is filled
@@ -55,8 +56,10 @@ struct RepairResult {
   std::size_t degenerate_faces = 0;     ///< removed: a vertex twice after welding
   std::size_t duplicate_faces = 0;      ///< removed: another face's three vertices
   std::size_t unused_vertices = 0;      ///< dropped: no face uses them
-  std::size_t split_edges = 0;          ///< non-manifold edges (more than two faces) split
-  std::size_t split_vertices = 0;       ///< vertices given a copy per sheet (bow-ties, split edges' ends)
+  /// Non-manifold edges (more than two faces) and vertices (bow-ties, split edges' ends) given a
+  /// copy per sheet and still split at the end: a bow-tie on a hole's rim whose fans the hole's
+  /// patch joins is one vertex again.
+  std::size_t split_edges = 0, split_vertices = 0;
   std::size_t flipped_faces = 0;        ///< turned to agree with their component's first face
   std::size_t inverted_components = 0;  ///< closed components turned outward (every face flipped)
   std::size_t components = 0;           ///< edge-connected components
