@@ -257,7 +257,8 @@ class Run {
       } catch (const InvalidInput& e) {
         throw PipelineFailed(result_.input + ": not FEM-ready: the surface is open (" +
                              std::to_string(report.border_edges) + " border edges) and cannot be closed into a block (" +
-                             e.what() + "); switch tetrahedralize off to process the surface only");
+                             e.what() + "); fill its holes first (--repair; repair.max_hole sets the longest rim filled), "
+                             "or switch tetrahedralize off to process the surface only");
       }
     }
   }
