@@ -154,6 +154,14 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
           (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).norm() / 2;
     hole.plane_distance = plane_distance(soup.points, rim.vertices, patch);
     soup.triangles.insert(soup.triangles.end(), patch.begin(), patch.end());
+    // The next holes see the patch as surface: two of them may share a split point.
+    for (const Triangle& t : patch)
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+        if (!edges.insert(edge_key(a, b)).second) continue;
+        if (a < neighbours.size()) neighbours[a].push_back(b);
+        if (b < neighbours.size()) neighbours[b].push_back(a);
+      }
     holes.push_back(std::move(hole));
   }
   return holes;
