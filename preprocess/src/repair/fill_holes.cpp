@@ -38,6 +38,14 @@ Vec3 unit_normal(const TriangleSoup& soup, std::uint32_t f) {
   return (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).normalized();
 }
 
+// Whether face f has the three rim vertices (copies of a split point taken as their lowest).
+bool is_face(const TriangleSoup& soup, std::uint32_t f, const std::vector<std::uint32_t>& rim,
+             const std::vector<std::uint32_t>& lowest) {
+  Triangle t = soup.triangles[f];
+  for (std::uint32_t& v : t) v = lowest[v];
+  return std::is_permutation(t.begin(), t.end(), rim.begin());
+}
+
 // The largest distance of `vertices` to the least-squares plane of the rim's vertices (through
 // their centroid, normal along the covariance's smallest eigenvector).
 double plane_distance(const std::vector<Vec3>& points, const std::vector<std::uint32_t>& rim,
@@ -126,6 +134,8 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
       hole.left_open = "its rim is longer than max_hole";
     else if (rim.vertices.size() > kLongestRim)
       hole.left_open = "its rim has more than " + std::to_string(kLongestRim) + " vertices";
+    else if (rim.vertices.size() == 3 && is_face(soup, border.at(start).face, rim.vertices, lowest))
+      hole.left_open = "its rim is a lone face's border (a patch would repeat the face)";
     if (!hole.left_open.empty()) {
       holes.push_back(std::move(hole));
       continue;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace meshprep {
 namespace {
@@ -77,6 +78,30 @@ TEST(RepairSplit, TwoCubesOnOneEdgeStayTwoClosedCubes) {
   EXPECT_TRUE(t.closed && t.manifold && t.oriented);
   EXPECT_EQ(t.components, 2u);
   EXPECT_NEAR(signed_volume(soup), 2.0, 1e-12);
+}
+
+// A fin on a cube's edge (three faces on it): the cube's two faces pair across its solid wedge,
+// the fin keeps the edge as a border, and its loop is left open even with no length limit, since
+// a patch would only repeat the fin.
+TEST(RepairSplit, AFinOnACubesEdgeLeavesTheCubeClosed) {
+  TriangleSoup soup = test::cube();
+  soup.points.push_back({0.5, -1, 0.5});
+  soup.triangles.push_back({0, 1, static_cast<std::uint32_t>(soup.points.size() - 1)});
+  RepairParams params;
+  params.max_hole = std::numeric_limits<double>::infinity();
+  const RepairResult r = repair(soup, params);
+  EXPECT_EQ(r.split_edges, 1u);
+  EXPECT_EQ(r.split_vertices, 2u);
+  ASSERT_EQ(r.holes.size(), 1u);
+  EXPECT_FALSE(r.holes[0].filled);
+  EXPECT_NE(r.holes[0].left_open.find("lone face"), std::string::npos) << r.holes[0].left_open;
+  EXPECT_EQ(soup.triangles.size(), 13u);
+  const Topology t = analyze_topology(soup);
+  EXPECT_TRUE(t.manifold && t.oriented);
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(t.boundary_loops, 1u);
+  EXPECT_NEAR(signed_volume(TriangleSoup{soup.points, {soup.triangles.begin(), soup.triangles.end() - 1}}), 1.0,
+              1e-12);
 }
 
 // Every point the patch adds is an average of points at z = 0 (centroids, then the fairing's
