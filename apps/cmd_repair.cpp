@@ -1,4 +1,4 @@
-// meshprep repair IN -o OUT [--weld-tolerance R] [--json FILE|-]: a dirty surface's connectivity
+// meshprep repair IN -o OUT [--weld-tolerance R] [--max-hole R] [--json FILE|-]: a dirty surface
 // mended (preprocess/repair/repair.h), then checked as tetrahedralize checks it: written only if
 // closed, manifold, oriented and free of self-intersections, else exit 1 naming what is left.
 #include "cli_common.h"
@@ -22,13 +22,15 @@ struct RepairOptions {
   RepairParams params;
 };
 
-// "welded 28 vertices, removed 0 degenerate and 1 duplicate faces, flipped 2 faces, turned 0
-// components outward".
+// "welded 28 vertices, removed 0 degenerate and 1 duplicate faces, split 1 non-manifold edges and
+// 2 vertices, flipped 2 faces, turned 0 components outward, filled 3 holes (2 left open)".
 std::string done_line(const RepairResult& r) {
   return "welded " + std::to_string(r.welded_vertices) + " vertices, removed " + std::to_string(r.degenerate_faces) +
-         " degenerate and " + std::to_string(r.duplicate_faces) + " duplicate faces, flipped " +
-         std::to_string(r.flipped_faces) + " faces, turned " + std::to_string(r.inverted_components) +
-         " components outward";
+         " degenerate and " + std::to_string(r.duplicate_faces) + " duplicate faces, split " +
+         std::to_string(r.split_edges) + " non-manifold edges and " + std::to_string(r.split_vertices) +
+         " vertices, flipped " + std::to_string(r.flipped_faces) + " faces, turned " +
+         std::to_string(r.inverted_components) + " components outward, filled " + std::to_string(r.filled_holes) +
+         " holes (" + std::to_string(r.open_holes) + " left open)";
 }
 
 int run_repair(const RepairOptions& o) {
@@ -64,11 +66,13 @@ Action add_repair_command(CLI::App& app) {
   auto o = std::make_shared<RepairOptions>();
   CLI::App* cmd = app.add_subcommand(
       "repair",
-      "Mend a dirty surface's connectivity (weld split vertices, drop degenerate and duplicate faces, orient "
-      "consistently and outward); written only if it is then ready for tetrahedralize");
+      "Mend a dirty surface (weld split vertices, drop degenerate and duplicate faces, split non-manifold edges "
+      "and vertices, orient consistently and outward, fill holes up to --max-hole); written only if it is then "
+      "ready for tetrahedralize");
   cmd->add_option("input", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output, "Repaired surface (.off .obj .ply .stl)")->required();
   add_parameter(*cmd, repair_parameters().weld_tolerance, o->params.weld_tolerance);
+  add_parameter(*cmd, repair_parameters().max_hole, o->params.max_hole);
   cmd->add_option("--json", o->json, "Write the counts of each step and the readiness as JSON (- for standard output)");
   return [o] { return run_repair(*o); };
 }

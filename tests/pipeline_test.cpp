@@ -180,7 +180,14 @@ TEST_F(Pipeline, WhatNoStageMendsIsRefusedBeforeAnyWork) {
     ADD_FAILURE() << "an open surface with a hole was accepted";
   } catch (const PipelineFailed& e) {
     EXPECT_NE(std::string(e.what()).find("2 boundary loops"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--repair"), std::string::npos) << e.what();
   }
+  // The repair stage fills the hole (its rim is 0.57 x the diagonal); the grid then extrudes to a
+  // block as a terrain does.
+  PipelineConfig repaired = small_config();
+  repaired.repair.enabled = true;
+  repaired.repair.params.max_hole = 1.0;
+  EXPECT_TRUE(run_pipeline(mesh_file(holed, "holed.off"), repaired).tets);
   // Switched off, the tets no longer need a closable surface.
   PipelineConfig surface_only = small_config();
   surface_only.tetrahedralize.enabled = false;

@@ -197,11 +197,14 @@ class Run {
     record.seconds = r.seconds;
     report = analyze_quality(loaded.soup, stage_params_);
     fill_shape(record, report);
-    record.details = picked(to_json(r), {"welded_vertices", "degenerate_faces", "duplicate_faces", "flipped_faces",
-                                         "inverted_components"});
+    record.details = picked(to_json(r), {"welded_vertices", "degenerate_faces", "duplicate_faces", "split_edges",
+                                         "split_vertices", "flipped_faces", "inverted_components", "filled_holes",
+                                         "open_holes", "holes"});
     record.note = std::to_string(r.welded_vertices) + " vertices welded, " +
                   std::to_string(r.degenerate_faces + r.duplicate_faces) + " faces removed, " +
-                  std::to_string(r.flipped_faces) + " flipped";
+                  std::to_string(r.split_edges + r.split_vertices) + " non-manifold edges and vertices split, " +
+                  std::to_string(r.flipped_faces) + " flipped, " + std::to_string(r.filled_holes) + " holes filled (" +
+                  std::to_string(r.open_holes) + " left open)";
     finish(std::move(record));
     return loaded;
   }
@@ -254,7 +257,8 @@ class Run {
       } catch (const InvalidInput& e) {
         throw PipelineFailed(result_.input + ": not FEM-ready: the surface is open (" +
                              std::to_string(report.border_edges) + " border edges) and cannot be closed into a block (" +
-                             e.what() + "); switch tetrahedralize off to process the surface only");
+                             e.what() + "); fill its holes first (--repair; repair.max_hole sets the longest rim filled), "
+                             "or switch tetrahedralize off to process the surface only");
       }
     }
   }

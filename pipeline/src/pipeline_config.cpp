@@ -142,9 +142,10 @@ Key choice(const char* section, const std::string& name, T& field, Choices<T> ch
 
 std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
   return {flag("repair", "enabled", r.enabled,
-               "weld split vertices, drop degenerate and duplicate faces and orient the input before it is checked "
-               "(meshprep repair)"),
-          number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance)};
+               "weld split vertices, drop degenerate and duplicate faces, split non-manifold edges and vertices, "
+               "orient and fill holes in the input before it is checked (meshprep repair)"),
+          number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance),
+          number("repair", repair_parameters().max_hole, r.params.max_hole)};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {

@@ -1,5 +1,5 @@
 #pragma once
-// Repair step 3 (repair.h): consistent orientation per component, closed components outward.
+// Repair step 4 (repair.h): consistent orientation per component, closed components outward.
 
 #include "meshprep/core/mesh.h"
 

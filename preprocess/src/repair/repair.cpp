@@ -1,10 +1,14 @@
 #include "meshprep/preprocess/repair/repair.h"
 
+#include "repair/fill_holes.h"
 #include "repair/orient_components.h"
+#include "repair/split_nonmanifold.h"
 #include "repair/weld_vertices.h"
 #include "shared/edge_lengths.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/preprocess/repair/repair_parameters.h"
+#include "meshprep/quality/surface_distance.h"
 
 #include <chrono>
 #include <cmath>
@@ -14,6 +18,7 @@ namespace meshprep {
 RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (!(params.weld_tolerance >= 0 && std::isfinite(params.weld_tolerance)))
     throw InvalidInput("repair: the weld tolerance must be a finite number >= 0");
+  check_parameter("repair", repair_parameters().max_hole, params.max_hole);
   const auto start = std::chrono::steady_clock::now();
   RepairResult result;
   result.weld_distance = params.weld_tolerance * detail::median_edge_length(surface);
@@ -22,10 +27,23 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.degenerate_faces = weld.degenerate_faces;
   result.duplicate_faces = weld.duplicate_faces;
   result.unused_vertices = weld.unused_vertices;
+  detail::SplitCounts split = detail::split_nonmanifold(surface);
+  result.split_edges = split.split_edges;
+  result.split_vertices = split.split_vertices;
   const detail::OrientCounts orient = detail::orient_components(surface);
   result.components = orient.components;
   result.flipped_faces = orient.flipped_faces;
   result.inverted_components = orient.inverted_components;
+  result.holes = detail::fill_holes(surface, params.max_hole * bbox_diagonal(surface));
+  for (const RepairHole& hole : result.holes) ++(hole.filled ? result.filled_holes : result.open_holes);
+  // A bow-tie on a hole's rim is one fan again once the patch joins its fans (fill_holes.cpp):
+  // its copies are welded back, and what is still not manifold is split again.
+  if (result.split_vertices > 0 && result.filled_holes > 0) {
+    detail::weld_vertices(surface, 0);
+    split = detail::split_nonmanifold(surface);
+    result.split_edges = split.split_edges;
+    result.split_vertices = split.split_vertices;
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

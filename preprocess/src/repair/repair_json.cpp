@@ -11,9 +11,29 @@ nlohmann::ordered_json to_json(const RepairResult& result) {
   json["degenerate_faces"] = result.degenerate_faces;
   json["duplicate_faces"] = result.duplicate_faces;
   json["unused_vertices"] = result.unused_vertices;
+  json["split_edges"] = result.split_edges;
+  json["split_vertices"] = result.split_vertices;
   json["components"] = result.components;
   json["flipped_faces"] = result.flipped_faces;
   json["inverted_components"] = result.inverted_components;
+  json["filled_holes"] = result.filled_holes;
+  json["open_holes"] = result.open_holes;
+  json["holes"] = nlohmann::ordered_json::array();
+  for (const RepairHole& h : result.holes) {
+    nlohmann::ordered_json hole;
+    hole["rim_vertices"] = h.rim_vertices;
+    hole["rim_length"] = h.rim_length;
+    hole["filled"] = h.filled;
+    if (!h.filled) hole["left_open"] = h.left_open;
+    if (h.filled) {
+      hole["patch_faces"] = h.patch_faces;
+      hole["patch_vertices"] = h.patch_vertices;
+      hole["patch_area"] = h.patch_area;
+      hole["plane_distance"] = h.plane_distance;
+      hole["faired"] = h.faired;
+    }
+    json["holes"].push_back(hole);
+  }
   json["time_seconds"] = result.seconds;
   return json;
 }

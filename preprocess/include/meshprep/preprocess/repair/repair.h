@@ -1,21 +1,29 @@
 #pragma once
 /// \file repair.h
-/// The repair stage, first steps (issue 33): a dirty surface's connectivity mended without moving
-/// the surface. In order:
+/// The repair stage (issue 33): a dirty surface mended without moving the input's vertices. In order:
 /// 1. weld: vertices closer than weld_tolerance x the median edge length become one (the lowest
 ///    index of each cluster, where it is: welding never moves a vertex);
 /// 2. faces that name a vertex twice after welding, and faces repeating another's three vertices,
 ///    are removed; vertices no face uses are dropped;
-/// 3. orientation: each edge-connected component is made consistent from its first face, across
-///    its manifold edges, and a closed component enclosing negative volume is turned outward.
-/// Holes, non-manifold edges and self-intersections are not mended yet: the caller checks the
-/// result (fem's check_fem_readiness) and refuses what is left.
+/// 3. non-manifold edges and vertices are split: each sheet meeting there gets its own copy of the
+///    vertices; the faces on an edge with more than two are paired by their angles around it, so
+///    two boxes touching along an edge stay two closed boxes (a bow-tie on a hole's rim is joined
+///    again by the hole's patch, step 5);
+/// 4. orientation: each edge-connected component is made consistent from its first face, across
+///    its manifold edges, and a closed component enclosing negative volume is turned outward;
+/// 5. holes: each boundary loop no longer than max_hole x the bounding box's diagonal is filled
+///    after Liepa 2003 (a minimum-dihedral, then minimum-area triangulation, refined to the
+///    density of the surface around it and faired with a bi-Laplacian); longer loops stay open.
+/// Self-intersections are not mended yet: the caller checks the result (fem's
+/// check_fem_readiness) and refuses what is left.
 
 #include "meshprep/core/mesh.h"
 
 #include <nlohmann/json_fwd.hpp>
 
 #include <cstddef>
+#include <string>
+#include <vector>
 
 namespace meshprep {
 
@@ -24,6 +32,22 @@ struct RepairParams {
   /// its vertices writes each copy with the same digits, so exact copies dominate; the margin
   /// takes exporters that round differently per copy, and stays far below any real edge.
   double weld_tolerance = 1e-3;
+  /// Boundary loops longer than this fraction of the bounding box's diagonal are left open
+  /// (repair_parameters.cpp says why 0.5).
+  double max_hole = 0.5;
+};
+
+/// One boundary loop, filled or left open. Lengths and areas are in the surface's units.
+struct RepairHole {
+  std::size_t rim_vertices = 0;
+  double rim_length = 0;
+  bool filled = false;
+  std::string left_open;            ///< why it was not filled; empty if it was
+  std::size_t patch_faces = 0;      ///< faces the patch added
+  std::size_t patch_vertices = 0;   ///< vertices the patch added (its refinement's)
+  double patch_area = 0;
+  double plane_distance = 0;  ///< largest distance of the patch's vertices to the rim's least-squares plane
+  bool faired = false;        ///< false if the fairing's solve failed (the patch stays refined, not faired)
 };
 
 struct RepairResult {
@@ -32,16 +56,23 @@ struct RepairResult {
   std::size_t degenerate_faces = 0;     ///< removed: a vertex twice after welding
   std::size_t duplicate_faces = 0;      ///< removed: another face's three vertices
   std::size_t unused_vertices = 0;      ///< dropped: no face uses them
+  /// Non-manifold edges (more than two faces) and vertices (bow-ties, split edges' ends) given a
+  /// copy per sheet and still split at the end: a bow-tie on a hole's rim whose fans the hole's
+  /// patch joins is one vertex again.
+  std::size_t split_edges = 0, split_vertices = 0;
   std::size_t flipped_faces = 0;        ///< turned to agree with their component's first face
   std::size_t inverted_components = 0;  ///< closed components turned outward (every face flipped)
   std::size_t components = 0;           ///< edge-connected components
+  std::vector<RepairHole> holes;        ///< every boundary loop after orientation
+  std::size_t filled_holes = 0, open_holes = 0;
   double seconds = 0;
 };
 
 /// Repair `surface` in place (steps above).
 RepairResult repair(TriangleSoup& surface, const RepairParams& params = {});
 
-/// The run as `meshprep repair --json` writes it: the fields above by name, time_seconds last.
+/// The run as `meshprep repair --json` writes it: the fields above by name (holes as an array of
+/// objects), time_seconds last.
 nlohmann::ordered_json to_json(const RepairResult& result);
 
 }  // namespace meshprep

@@ -9,6 +9,7 @@ namespace meshprep {
 
 struct RepairParameters {
   ParameterInfo weld_tolerance;
+  ParameterInfo max_hole;
 };
 
 const RepairParameters& repair_parameters();
