@@ -3,6 +3,7 @@
 #include "repair/fair_patch.h"
 #include "repair/refine_patch.h"
 #include "repair/triangulate_hole.h"
+#include "shared/triangle_angles.h"
 
 #include "meshprep/quality/face_edges.h"
 
@@ -32,11 +33,6 @@ constexpr std::size_t kLongestRim = 1000;
 struct Border {
   std::uint32_t to, face;
 };
-
-Vec3 unit_normal(const TriangleSoup& soup, std::uint32_t f) {
-  const Triangle& t = soup.triangles[f];
-  return (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).normalized();
-}
 
 // Whether face f has the three rim vertices (copies of a split point taken as their lowest).
 bool is_face(const TriangleSoup& soup, std::uint32_t f, const std::vector<std::uint32_t>& rim,
