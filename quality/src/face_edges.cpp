@@ -11,8 +11,8 @@ std::vector<FaceEdge> sorted_face_edges(const SoupView& soup) {
     const Triangle& t = soup.triangles[f];
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
     for (int c = 0; c < 3; ++c) {
-      const std::uint64_t a = t[c], b = t[(c + 1) % 3];
-      edges.push_back({a < b ? (a << 32 | b) : (b << 32 | a), f, a < b});
+      const std::uint32_t a = t[c], b = t[(c + 1) % 3];
+      edges.push_back({edge_key(a, b), f, a < b});
     }
   }
   std::sort(edges.begin(), edges.end(),

@@ -47,9 +47,8 @@ class Remesher {
     // split, the splits refine them instead of putting a vertex on every needle for the collapses
     // to take away (example005: 51,000 splits and 45,000 collapses for 12,000 faces; 10,000 and
     // 3,900 with the flips).
-    std::vector<EdgeHandle> edges;
-    for (const auto e : mesh_.edges()) edges.push_back(e);
-    flip_planar_to_delaunay(std::move(edges));
+    for (const auto e : mesh_.edges()) flip_stack_.push_back(e);
+    flip_planar_to_delaunay([](EdgeHandle) {});
     for (std::size_t i = 0; i < rules_.iterations; ++i) {
       split_long_edges();
       collapse_short_edges();
@@ -107,10 +106,9 @@ class Remesher {
       if (constraints_.role(m) == VertexRole::Surface) settle(m);
       measure_size(m);
       ++counts_.splits;
-      std::vector<EdgeHandle> link;
       for (const HalfedgeHandle out : mesh_.voh_range(m))
-        if (mesh_.face_handle(out).is_valid()) link.push_back(mesh_.edge_handle(mesh_.next_halfedge_handle(out)));
-      for (const EdgeHandle f : flip_planar_to_delaunay(link)) push(f);
+        if (mesh_.face_handle(out).is_valid()) flip_stack_.push_back(mesh_.edge_handle(mesh_.next_halfedge_handle(out)));
+      flip_planar_to_delaunay(push);
       for (const HalfedgeHandle out : mesh_.voh_range(m)) {
         push(mesh_.edge_handle(out));
         if (mesh_.face_handle(out).is_valid()) push(mesh_.edge_handle(mesh_.next_halfedge_handle(out)));
@@ -135,16 +133,15 @@ class Remesher {
   // Whether moving v to x turns one of its faces by more than kMaxTurnCosine allows (or flattens it).
   bool turns_faces(VertexHandle v, const Vec3& x) const { return vertex_move(mesh_, v, x, kMaxTurnCosine, HeightField{}).turns; }
 
-  // Flips the given edges, and the edges each flip exposes, while they join two coplanar faces
-  // (within kCoplanarCosine) and are not locally Delaunay (their opposite angles sum to more than
-  // pi): Lawson's flips, which end at the Delaunay triangulation of a plane's vertices and do not
-  // move the surface (within the bound, checked as a flip toward valence 6 checks it). Returns the
-  // flipped edges.
-  std::vector<EdgeHandle> flip_planar_to_delaunay(std::vector<EdgeHandle> stack) {
-    std::vector<EdgeHandle> flipped;
-    while (!stack.empty()) {
-      const EdgeHandle e = stack.back();
-      stack.pop_back();
+  // Flips the edges on flip_stack_, and the edges each flip exposes, while they join two coplanar
+  // faces (within kCoplanarCosine) and are not locally Delaunay: Lawson's flips, which end at the
+  // Delaunay triangulation of a plane's vertices and do not move the surface (within the bound,
+  // checked as a flip toward valence 6 checks it). Calls flipped(e) for each flipped edge.
+  template <class Flipped>
+  void flip_planar_to_delaunay(const Flipped& flipped) {
+    while (!flip_stack_.empty()) {
+      const EdgeHandle e = flip_stack_.back();
+      flip_stack_.pop_back();
       if (mesh_.status(e).deleted() || mesh_.is_boundary(e) || constraints_.is_feature(e) || !mesh_.is_flip_ok(e)) continue;
       const HalfedgeHandle h0 = mesh_.halfedge_handle(e, 0), h1 = mesh_.halfedge_handle(e, 1);
       const Vec3 a = point(mesh_, mesh_.from_vertex_handle(h0)), b = point(mesh_, mesh_.to_vertex_handle(h0));
@@ -152,22 +149,18 @@ class Remesher {
       const Vec3 d = point(mesh_, mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h1)));
       const Vec3 n0 = area_normal(a, b, c), n1 = area_normal(b, a, d);
       if (!(n0.dot(n1) >= kCoplanarCosine * n0.norm() * n1.norm())) continue;
-      const auto angle = [](const Vec3& apex, const Vec3& p, const Vec3& q) {
-        return std::atan2((p - apex).cross(q - apex).norm(), (p - apex).dot(q - apex));
-      };
-      if (angle(c, a, b) + angle(d, b, a) <= M_PI * (1 + 1e-12)) continue;
+      if (!flips_to_delaunay(a, b, c, d)) continue;
       // The quad must be convex: both new faces facing as the old.
       const Vec3 m0 = area_normal(a, d, c), m1 = area_normal(d, b, c);
       if (!(m0.dot(n0) > 0) || !(m1.dot(n0) > 0)) continue;
       if (std::abs((0.5 * (a + b) - 0.5 * (c + d)).dot((n0 + n1).normalized())) > rules_.max_deviation) continue;
       mesh_.flip(e);
       ++counts_.flips;
-      flipped.push_back(e);
+      flipped(e);
       for (const HalfedgeHandle h : {mesh_.next_halfedge_handle(h0), mesh_.prev_halfedge_handle(h0), mesh_.next_halfedge_handle(h1),
                                      mesh_.prev_halfedge_handle(h1)})
-        stack.push_back(mesh_.edge_handle(h));
+        flip_stack_.push_back(mesh_.edge_handle(h));
     }
-    return flipped;
   }
 
   void collapse_short_edges() {
@@ -320,6 +313,7 @@ class Remesher {
   OpenMesh::VPropHandleT<double> size_;
   RemeshCounts counts_;
   std::size_t faces_at_start_ = 0;
+  std::vector<EdgeHandle> flip_stack_;  // flip_planar_to_delaunay's work, kept between splits
 };
 
 }  // namespace

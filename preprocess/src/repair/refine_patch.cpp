@@ -1,6 +1,7 @@
 #include "repair/refine_patch.h"
 
 #include "repair/triangulate_hole.h"
+#include "shared/triangle_angles.h"
 
 #include <array>
 #include <cmath>
@@ -18,11 +19,6 @@ constexpr double kMargin = 1 + 1e-9;
 // round's faces are smaller), these only stop a pathological rim from running away.
 constexpr int kMaxRounds = 64;
 constexpr int kMaxSweeps = 64;
-
-double angle(const Vec3& at, const Vec3& a, const Vec3& b) {
-  const Vec3 u = a - at, w = b - at;
-  return std::atan2(u.cross(w).norm(), u.dot(w));
-}
 
 class Patch {
  public:
@@ -88,7 +84,7 @@ class Patch {
     const std::uint32_t c = opposite(f, a, b), d = opposite(g, a, b);
     if (c == d || surface_edges_.count(edge_key(c, d)) || faces_of_edge_.count(edge_key(c, d))) return false;
     const Vec3 &pa = points_[a], &pb = points_[b];
-    if (angle(points_[c], pa, pb) + angle(points_[d], pa, pb) <= M_PI + 1e-12) return false;
+    if (!flips_to_delaunay(pa, pb, points_[c], points_[d])) return false;
     if (degenerate(a, d, c) || degenerate(d, b, c)) return false;  // c on a-b's line, or on a copy of d
     unlink(f);
     unlink(g);
@@ -99,10 +95,9 @@ class Patch {
     return true;
   }
 
-  // Far thinner than any face the programme or a split makes (triangulate_hole.cpp's test).
   bool degenerate(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
     const Vec3 u = points_[b] - points_[a], w = points_[c] - points_[a];
-    return !(u.cross(w).norm() > 1e-12 * (u.squaredNorm() + w.squaredNorm()));
+    return too_thin(u.cross(w).norm(), u, w);
   }
 
   std::uint32_t opposite(std::size_t f, std::uint32_t a, std::uint32_t b) const {

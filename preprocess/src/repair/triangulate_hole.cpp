@@ -42,7 +42,7 @@ std::vector<Triangle> triangulate_hole(const std::vector<Vec3>& points, const Ho
         const Vec3 twice = (pm - pk).cross(pi - pk);
         const double twice_area = twice.norm();
         // Collinear corners (a straight stretch of rim) make no face.
-        if (!(twice_area > 1e-12 * ((pm - pk).squaredNorm() + (pi - pk).squaredNorm()))) continue;
+        if (too_thin(twice_area, pm - pk, pi - pk)) continue;
         const double face_area = area[at(i, m)] + area[at(m, k)] + twice_area / 2;
         double face_cosine = std::min(cosine[at(i, m)], cosine[at(m, k)]);
         if (dihedral) {

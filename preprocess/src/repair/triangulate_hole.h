@@ -2,6 +2,7 @@
 // Repair step 5a (fill_holes.h): the first triangulation of a hole, Liepa's dynamic programme.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/quality/face_edges.h"
 
 #include <cstdint>
 #include <unordered_set>
@@ -9,9 +10,11 @@
 
 namespace meshprep::detail {
 
-/// The undirected edge a-b as one number (smaller index << 32 | larger), as FaceEdge keys it.
-inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
+/// Whether the triangle with sides u and w from one corner, |u x w| = twice_area, is too thin to
+/// be a face (collinear corners of a straight stretch of rim): the test of the programme and of
+/// the patch's refinement alike.
+inline bool too_thin(double twice_area, const Vec3& u, const Vec3& w) {
+  return !(twice_area > 1e-12 * (u.squaredNorm() + w.squaredNorm()));
 }
 
 /// A boundary loop: its vertices in the order the surface's faces run the border, and for each

@@ -1,5 +1,6 @@
 #pragma once
-// Shape tests of the simplifier's guards, polish and fit and of the enhancement's, without trigonometry.
+// Shape tests of the simplifier's guards, polish and fit, of the enhancement's and of the repair's
+// patches.
 
 #include "meshprep/core/mesh.h"
 #include "meshprep/core/soup_view.h"
@@ -27,6 +28,16 @@ inline Vec3 unit_normal(const SoupView& soup, std::size_t face) {
   const auto& t = soup.triangles[face];
   const Vec3 n = area_normal(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
   return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+}
+
+/// Whether the edge a-b between triangles (a, b, c) and (b, a, d) is not locally Delaunay: its
+/// opposite angles, at c and d, sum to more than pi (beyond rounding), so that flipping it to c-d
+/// raises the smaller angles (Lawson's flip).
+inline bool flips_to_delaunay(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const auto angle = [](const Vec3& apex, const Vec3& p, const Vec3& q) {
+    return std::atan2((p - apex).cross(q - apex).norm(), (p - apex).dot(q - apex));
+  };
+  return angle(c, a, b) + angle(d, b, a) > M_PI + 1e-12;
 }
 
 /// Two faces whose unit normals' cosine exceeds this (0.1 degrees apart) are coplanar: a CAD

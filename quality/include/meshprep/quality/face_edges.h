@@ -11,9 +11,14 @@
 
 namespace meshprep {
 
+/// The undirected edge a-b as one number: smaller index << 32 | larger.
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
+}
+
 /// One directed edge of a face, keyed by its undirected vertex pair.
 struct FaceEdge {
-  std::uint64_t key;  ///< smaller vertex index << 32 | larger
+  std::uint64_t key;  ///< edge_key of its two vertices
   std::uint32_t face;
   bool forward;  ///< traversed from the smaller to the larger vertex index
 
