@@ -30,7 +30,11 @@ std::string done_line(const RepairResult& r) {
          std::to_string(r.split_edges) + " non-manifold edges and " + std::to_string(r.split_vertices) +
          " vertices, flipped " + std::to_string(r.flipped_faces) + " faces, turned " +
          std::to_string(r.inverted_components) + " components outward, filled " + std::to_string(r.filled_holes) +
-         " holes (" + std::to_string(r.open_holes) + " left open)";
+         " holes (" + std::to_string(r.open_holes) + " left open), cut " + std::to_string(r.cut_faces) + " faces along " +
+         std::to_string(r.intersecting_pairs) + " intersecting pairs and removed " + std::to_string(r.removed_faces) +
+         " pieces inside, dropped " + std::to_string(r.nested_components) + " nested parts (" +
+         std::to_string(r.cavities) + " kept as cavities), moved apart " + std::to_string(r.separated_pinches) +
+         " copies of points where parts touch";
 }
 
 int run_repair(const RepairOptions& o) {
@@ -67,12 +71,14 @@ Action add_repair_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "repair",
       "Mend a dirty surface (weld split vertices, drop degenerate and duplicate faces, split non-manifold edges "
-      "and vertices, orient consistently and outward, fill holes up to --max-hole); written only if it is then "
+      "and vertices, orient consistently and outward, fill holes up to --max-hole, cut self-intersections and keep the "
+      "union's boundary); written only if it is then "
       "ready for tetrahedralize");
   cmd->add_option("input", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output, "Repaired surface (.off .obj .ply .stl)")->required();
   add_parameter(*cmd, repair_parameters().weld_tolerance, o->params.weld_tolerance);
   add_parameter(*cmd, repair_parameters().max_hole, o->params.max_hole);
+  add_parameter(*cmd, repair_parameters().keep_cavities, o->params.keep_cavities);
   cmd->add_option("--json", o->json, "Write the counts of each step and the readiness as JSON (- for standard output)");
   return [o] { return run_repair(*o); };
 }

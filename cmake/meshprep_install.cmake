@@ -20,7 +20,7 @@ foreach(module IN LISTS meshprep_modules)
 endforeach()
 
 # 3. The exported targets, the package config and its version, and the find modules the config
-#    needs (the static libraries carry TetGen::tetgen and GMP::gmp as link-only dependencies).
+#    needs (the static libraries carry TetGen::tetgen, GMP::gmp and GMP::gmpxx as link-only dependencies).
 install(EXPORT meshprepTargets NAMESPACE meshprep:: DESTINATION ${MESHPREP_CONFIG_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/meshprepConfig.cmake.in
   ${PROJECT_BINARY_DIR}/meshprepConfig.cmake INSTALL_DESTINATION ${MESHPREP_CONFIG_DIR})

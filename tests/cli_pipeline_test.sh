@@ -220,7 +220,15 @@ assert j['fem_ready'] is True, j['fem_ready']" && ok || bad "--repair: the repai
 "$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 1 $?
 one_line "self-intersecting input" "two_boxes.off: not FEM-ready: the surface intersects itself"
 [ -z "$(ls -A out_boxes 2>/dev/null)" ] && ok || bad "files written for a self-intersecting input"
-grep -q "simplification may" err.txt && ok || bad "the refusal says which stage may remove crossings"
+grep -q "simplification may" err.txt && grep -q -- "--repair cuts" err.txt && ok ||
+  bad "the refusal says which stages may remove crossings"
+# With --repair the boxes become their union and go through to tets.
+"$bin" pipeline two_boxes.off -o out_boxes_repaired --repair --quiet --json boxes.json > /dev/null 2> err.txt
+expect_exit "self-intersecting input, --repair" 0 $?
+python3 -c "
+import json; j = json.load(open('boxes.json')); d = j['stages'][0]['details']
+assert d['intersecting_pairs'] > 0 and d['removed_faces'] > 0 and j['fem_ready'] is True, d" &&
+  [ -s out_boxes_repaired/tets.msh ] && ok || bad "--repair on crossing boxes: the union or the tets"
 # With a target, simplification runs (it may remove crossings) and the final surface is judged:
 # the boxes still cross, so not FEM-ready, exit 1, the outputs written and saying why.
 "$bin" pipeline two_boxes.off -o out_boxes_simplified --ratio 0.5 > /dev/null 2> err.txt

@@ -199,12 +199,15 @@ class Run {
     fill_shape(record, report);
     record.details = picked(to_json(r), {"welded_vertices", "degenerate_faces", "duplicate_faces", "split_edges",
                                          "split_vertices", "flipped_faces", "inverted_components", "filled_holes",
-                                         "open_holes", "holes"});
+                                         "open_holes", "holes", "intersecting_pairs", "cut_faces", "removed_faces",
+                                         "nested_components", "cavities", "separated_pinches"});
     record.note = std::to_string(r.welded_vertices) + " vertices welded, " +
                   std::to_string(r.degenerate_faces + r.duplicate_faces) + " faces removed, " +
                   std::to_string(r.split_edges + r.split_vertices) + " non-manifold edges and vertices split, " +
                   std::to_string(r.flipped_faces) + " flipped, " + std::to_string(r.filled_holes) + " holes filled (" +
-                  std::to_string(r.open_holes) + " left open)";
+                  std::to_string(r.open_holes) + " left open), " + std::to_string(r.intersecting_pairs) +
+                  " crossing face pairs cut (" + std::to_string(r.removed_faces) + " pieces inside removed, " +
+                  std::to_string(r.nested_components) + " nested parts dropped)";
     finish(std::move(record));
     return loaded;
   }
@@ -249,8 +252,9 @@ class Run {
       throw PipelineFailed(result_.input + ": not FEM-ready: the surface intersects itself at " +
                            std::to_string(report.self_intersections) +
                            " face pairs (meshprep quality lists them), which the stages that run do not remove "
-                           "(simplification may: give --ratio or --target-faces); repair the surface first, or switch "
-                           "tetrahedralize off to process the surface only");
+                           "(simplification may: give --ratio or --target-faces); repair the surface first (--repair cuts "
+                           "the crossings and keeps the solid's outer surface), or switch tetrahedralize off to process "
+                           "the surface only");
     if (!report.closed) {
       try {
         extrude_to_block(result_.input_surface, 1);

@@ -143,9 +143,10 @@ Key choice(const char* section, const std::string& name, T& field, Choices<T> ch
 std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
   return {flag("repair", "enabled", r.enabled,
                "weld split vertices, drop degenerate and duplicate faces, split non-manifold edges and vertices, "
-               "orient and fill holes in the input before it is checked (meshprep repair)"),
+               "orient, fill holes and remove self-intersections in the input before it is checked (meshprep repair)"),
           number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance),
-          number("repair", repair_parameters().max_hole, r.params.max_hole)};
+          number("repair", repair_parameters().max_hole, r.params.max_hole),
+          flag("repair", repair_parameters().keep_cavities, r.params.keep_cavities)};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {

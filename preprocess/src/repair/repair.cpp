@@ -2,6 +2,7 @@
 
 #include "repair/fill_holes.h"
 #include "repair/orient_components.h"
+#include "repair/remove_self_intersections.h"
 #include "repair/split_nonmanifold.h"
 #include "repair/weld_vertices.h"
 #include "shared/edge_lengths.h"
@@ -44,6 +45,13 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
     result.split_edges = split.split_edges;
     result.split_vertices = split.split_vertices;
   }
+  const detail::SelfIntersectionCounts crossing = detail::remove_self_intersections(surface, params.keep_cavities);
+  result.intersecting_pairs = crossing.intersecting_pairs;
+  result.cut_faces = crossing.cut_faces;
+  result.removed_faces = crossing.removed_faces;
+  result.nested_components = crossing.nested_components;
+  result.cavities = crossing.cavities;
+  result.separated_pinches = crossing.separated_pinches;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

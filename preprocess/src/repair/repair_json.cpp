@@ -34,6 +34,12 @@ nlohmann::ordered_json to_json(const RepairResult& result) {
     }
     json["holes"].push_back(hole);
   }
+  json["intersecting_pairs"] = result.intersecting_pairs;
+  json["cut_faces"] = result.cut_faces;
+  json["removed_faces"] = result.removed_faces;
+  json["nested_components"] = result.nested_components;
+  json["cavities"] = result.cavities;
+  json["separated_pinches"] = result.separated_pinches;
   json["time_seconds"] = result.seconds;
   return json;
 }

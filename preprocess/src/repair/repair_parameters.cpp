@@ -19,7 +19,10 @@ const RepairParameters& repair_parameters() {
       {"max_hole", "--max-hole",
        "boundary loops longer than this fraction of the bounding box's diagonal are left open (a terrain or a mask "
        "is not a solid); 0 = fill none",
-       {0, inf}}};
+       {0, inf}},
+      {"keep_cavities", "--keep-cavities",
+       "keep a closed part lying inside another and touching nothing as the wall of a void, instead of dropping it",
+       {}}};
   return parameters;
 }
 

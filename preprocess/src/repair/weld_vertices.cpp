@@ -1,12 +1,13 @@
 #include "repair/weld_vertices.h"
 
 #include "meshprep/core/union_find.h"
+#include "meshprep/quality/face_edges.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <set>
+#include <map>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -76,24 +77,50 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   UnionFind clusters(soup.points.size());
   counts.welded_vertices = join_close(soup, used, distance, clusters);
 
-  // Faces naming a vertex twice go; of faces on the same three vertices (either orientation),
-  // the first in the file stays.
+  // Faces naming a vertex twice go. Of faces on the same three vertices facing the same way, the
+  // first in the file stays. Faces on them facing both ways, where every edge of theirs has two
+  // faces besides them, are a wall two solids share (each faces into the other): all go, and the
+  // solids become one. Elsewhere (a solid with one face written twice) the first stays.
   std::vector<Triangle> faces;
-  std::set<std::array<std::uint32_t, 3>> seen;
+  struct Copies {
+    std::size_t first;  // in faces
+    std::size_t count;
+    bool forward, both_ways;
+  };
+  std::map<std::array<std::uint32_t, 3>, Copies> seen;
+  std::unordered_map<std::uint64_t, std::size_t> edge_uses;
   for (Triangle t : soup.triangles) {
     for (std::uint32_t& v : t) v = clusters.find(v);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
       ++counts.degenerate_faces;
       continue;
     }
+    for (int i = 0; i < 3; ++i) ++edge_uses[edge_key(t[i], t[(i + 1) % 3])];
     std::array<std::uint32_t, 3> sorted{t[0], t[1], t[2]};
     std::sort(sorted.begin(), sorted.end());
-    if (!seen.insert(sorted).second) {
+    // (a, b, c) is a rotation of its sorted order iff an even number of its pairs are inverted.
+    const bool forward = ((t[0] > t[1]) + (t[1] > t[2]) + (t[0] > t[2])) % 2 == 0;
+    const auto [it, added] = seen.emplace(sorted, Copies{faces.size(), 1, forward, false});
+    if (!added) {
       ++counts.duplicate_faces;
+      ++it->second.count;
+      it->second.both_ways = it->second.both_ways || it->second.forward != forward;
       continue;
     }
     faces.push_back(t);
   }
+  std::vector<char> wall(faces.size(), 0);
+  for (const auto& [vertices, copies] : seen) {
+    if (!copies.both_ways) continue;
+    const auto others = [&](std::uint32_t a, std::uint32_t b) { return edge_uses[edge_key(a, b)] - copies.count; };
+    if (others(vertices[0], vertices[1]) >= 2 && others(vertices[1], vertices[2]) >= 2 &&
+        others(vertices[0], vertices[2]) >= 2)
+      wall[copies.first] = 1, ++counts.duplicate_faces;
+  }
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (!wall[f]) faces[kept++] = faces[f];
+  faces.resize(kept);
 
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
   std::vector<Vec3> points;

@@ -12,8 +12,10 @@ struct WeldCounts {
 };
 
 /// Welds vertices within `distance` of each other (each cluster onto its lowest index, which does
-/// not move), then removes faces naming a vertex twice and faces repeating another's vertices,
-/// and drops the vertices no face uses.
+/// not move), then removes faces naming a vertex twice and faces repeating another's vertices
+/// (all copies of faces on the same vertices facing both ways whose edges have two other faces
+/// each: a wall two solids share), and drops
+/// the vertices no face uses.
 WeldCounts weld_vertices(TriangleSoup& soup, double distance);
 
 }  // namespace meshprep::detail

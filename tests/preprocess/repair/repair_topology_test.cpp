@@ -1,6 +1,7 @@
 // The repair's non-manifold split and hole filling (repair.h, steps 3 and 5) on hand-made cases:
 // bow-tie vertices, two cubes on one edge, a square hole in a plane, a sphere without its cap.
 #include "meshprep/preprocess/repair/repair.h"
+#include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/topology.h"
 #include "meshprep/quality/triangle_metrics.h"
 
@@ -54,6 +55,9 @@ TEST(RepairSplit, ABowTieOfTwoTrianglesBecomesTwoSheets) {
   EXPECT_EQ(r.open_holes, 1u);  // the two borders through the point, 2.4 x the diagonal: a sheet's
 }
 
+// The two copies of the point are then held apart (separate_pinches.h), so the faces no longer
+// touch: each moves 1e-3 x the unit edge, and its three faces (area sqrt 3 / 4 each) sweep at most
+// 1e-3 x 3 (sqrt 3 / 4) / 3 of volume.
 TEST(RepairSplit, TwoTetrahedraOnOneVertexBecomeTwoClosedSheets) {
   const TriangleSoup tet = test::regular_tetrahedron();
   TriangleSoup soup = test::merged(tet, test::translated(tet, tet.points[0] - tet.points[1]));  // touch at one point
@@ -61,9 +65,11 @@ TEST(RepairSplit, TwoTetrahedraOnOneVertexBecomeTwoClosedSheets) {
   EXPECT_EQ(r.welded_vertices, 1u);
   EXPECT_EQ(r.split_vertices, 1u);
   EXPECT_EQ(r.components, 2u);
+  EXPECT_EQ(r.separated_pinches, 2u);
   const Topology t = analyze_topology(soup);
   EXPECT_TRUE(t.closed && t.manifold && t.oriented);
-  EXPECT_NEAR(signed_volume(soup), 2 * signed_volume(tet), 1e-12);
+  EXPECT_EQ(find_self_intersections(soup).count, 0u);
+  EXPECT_NEAR(signed_volume(soup), 2 * signed_volume(tet), 2 * 1e-3 * std::sqrt(3.0) / 4);
 }
 
 // The four faces on the shared edge pair across the two boxes' wedges, not across the empty ones.
@@ -77,7 +83,11 @@ TEST(RepairSplit, TwoCubesOnOneEdgeStayTwoClosedCubes) {
   const Topology t = analyze_topology(soup);
   EXPECT_TRUE(t.closed && t.manifold && t.oriented);
   EXPECT_EQ(t.components, 2u);
-  EXPECT_NEAR(signed_volume(soup), 2.0, 1e-12);
+  // The four copies at the edge's ends are held apart: each moves 1e-3 (the shortest edge is 1)
+  // and its faces (at most 1.5 of area at a cube's corner) sweep at most 1e-3 x 1.5 / 3 of volume.
+  EXPECT_EQ(r.separated_pinches, 4u);
+  EXPECT_EQ(find_self_intersections(soup).count, 0u);
+  EXPECT_NEAR(signed_volume(soup), 2.0, 4 * 1e-3 * 1.5 / 3);
 }
 
 // A fin on a cube's edge (three faces on it): the cube's two faces pair across its solid wedge,
@@ -100,8 +110,9 @@ TEST(RepairSplit, AFinOnACubesEdgeLeavesTheCubeClosed) {
   EXPECT_TRUE(t.manifold && t.oriented);
   EXPECT_EQ(t.components, 2u);
   EXPECT_EQ(t.boundary_loops, 1u);
+  // The cube's two copies at the fin's edge are held apart from the fin's (as above).
   EXPECT_NEAR(signed_volume(TriangleSoup{soup.points, {soup.triangles.begin(), soup.triangles.end() - 1}}), 1.0,
-              1e-12);
+              2 * 1e-3 * 1.5 / 3);
 }
 
 // Every point the patch adds is an average of points at z = 0 (centroids, then the fairing's

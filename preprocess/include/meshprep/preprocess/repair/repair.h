@@ -4,7 +4,8 @@
 /// 1. weld: vertices closer than weld_tolerance x the median edge length become one (the lowest
 ///    index of each cluster, where it is: welding never moves a vertex);
 /// 2. faces that name a vertex twice after welding, and faces repeating another's three vertices,
-///    are removed; vertices no face uses are dropped;
+///    are removed (every copy when they face both ways and their edges have two other faces each: the
+///    wall two solids share); vertices no face uses are dropped;
 /// 3. non-manifold edges and vertices are split: each sheet meeting there gets its own copy of the
 ///    vertices; the faces on an edge with more than two are paired by their angles around it, so
 ///    two boxes touching along an edge stay two closed boxes (a bow-tie on a hole's rim is joined
@@ -14,8 +15,16 @@
 /// 5. holes: each boundary loop no longer than max_hole x the bounding box's diagonal is filled
 ///    after Liepa 2003 (a minimum-dihedral, then minimum-area triangulation, refined to the
 ///    density of the surface around it and faired with a bi-Laplacian); longer loops stay open.
-/// Self-intersections are not mended yet: the caller checks the result (fem's
-/// check_fem_readiness) and refuses what is left.
+/// 6. self-intersections: every face is cut exactly along the curves where others cross or touch
+///    it, and the pieces bounding the union of what the surface encloses are kept (those just
+///    outside which the winding number is 0). Overlapping parts become one solid, a wall two parts
+///    share goes, a fold loses its inner sheets; a closed part inside another that touches nothing
+///    is dropped, or kept as a cavity's wall with keep_cavities. It comes after the holes because
+///    the winding number only tells inside from outside for a closed surface.
+///    Why this method: every kept piece lies on the input (to the rounding of the new points), so
+///    the surface moves by nothing measurable, and it gives the union the issue asks of touching,
+///    overlapping and nested parts, which a local remesh of the crossing faces cannot.
+/// The caller checks the result (fem's check_fem_readiness) and refuses what is left.
 
 #include "meshprep/core/mesh.h"
 
@@ -35,6 +44,9 @@ struct RepairParams {
   /// Boundary loops longer than this fraction of the bounding box's diagonal are left open
   /// (repair_parameters.cpp says why 0.5).
   double max_hole = 0.5;
+  /// A closed part inside another that touches nothing is kept as the wall of a void (facing
+  /// inwards) instead of being dropped.
+  bool keep_cavities = false;
 };
 
 /// One boundary loop, filled or left open. Lengths and areas are in the surface's units.
@@ -54,7 +66,8 @@ struct RepairResult {
   double weld_distance = 0;             ///< the welding distance used, in the surface's units
   std::size_t welded_vertices = 0;      ///< vertices merged into another
   std::size_t degenerate_faces = 0;     ///< removed: a vertex twice after welding
-  std::size_t duplicate_faces = 0;      ///< removed: another face's three vertices
+  /// Removed: another face's three vertices (every copy when they are a wall two solids share).
+  std::size_t duplicate_faces = 0;
   std::size_t unused_vertices = 0;      ///< dropped: no face uses them
   /// Non-manifold edges (more than two faces) and vertices (bow-ties, split edges' ends) given a
   /// copy per sheet and still split at the end: a bow-tie on a hole's rim whose fans the hole's
@@ -65,6 +78,12 @@ struct RepairResult {
   std::size_t components = 0;           ///< edge-connected components
   std::vector<RepairHole> holes;        ///< every boundary loop after orientation
   std::size_t filled_holes = 0, open_holes = 0;
+  std::size_t intersecting_pairs = 0;  ///< pairs of faces crossing, overlapping or touching
+  std::size_t cut_faces = 0;           ///< faces triangulated again along where others meet them
+  std::size_t removed_faces = 0;       ///< pieces inside the union, or doubled, dropped
+  std::size_t nested_components = 0;   ///< closed parts inside another touching nothing, dropped
+  std::size_t cavities = 0;            ///< such parts kept as cavities (keep_cavities)
+  std::size_t separated_pinches = 0;   ///< copies of a point where parts touch, moved apart
   double seconds = 0;
 };
 

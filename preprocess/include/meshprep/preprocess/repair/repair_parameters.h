@@ -10,6 +10,7 @@ namespace meshprep {
 struct RepairParameters {
   ParameterInfo weld_tolerance;
   ParameterInfo max_hole;
+  ParameterInfo keep_cavities;
 };
 
 const RepairParameters& repair_parameters();
