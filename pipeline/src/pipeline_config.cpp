@@ -145,7 +145,7 @@ std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
                "weld split vertices, drop degenerate and duplicate faces, split non-manifold edges and vertices, "
                "orient and fill holes in the input before it is checked (meshprep repair)"),
           number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance),
-          number("repair", repair_parameters().max_hole, r.params.max_hole)};
+          number_or_auto("repair", repair_parameters().max_hole, r.params.max_hole)};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {
