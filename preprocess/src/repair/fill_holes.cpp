@@ -165,7 +165,7 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, std::optional<double> max
     else if (!max_hole && sheets[l].outline && sheets[l].one_sidedness > kSheetOneSidedness)
       hole.left_open = "it is the outline of an open sheet (one-sidedness " + two_digits(sheets[l].one_sidedness) +
                        " > " + two_digits(kSheetOneSidedness) +
-                       ": a terrain, a mask or a bowl, not a solid's missing part; a max_hole fills by length)";
+                       ": a terrain, a mask or a bowl, not a solid's missing part; given a max_hole, loops are filled by length)";
     else if (rim.vertices.size() > kLongestRim)
       hole.left_open = "its rim has more than " + std::to_string(kLongestRim) + " vertices";
     else if (rim.vertices.size() == 3 && is_face(soup, loops[l].border.face, rim.vertices, lowest))
