@@ -1,4 +1,4 @@
-// meshprep repair IN -o OUT [--weld-tolerance R] [--max-hole R] [--json FILE|-]: a dirty surface
+// meshprep repair IN -o OUT [--weld-tolerance R] [--max-hole R|auto] [--json FILE|-]: a dirty surface
 // mended (preprocess/repair/repair.h), then checked as tetrahedralize checks it: written only if
 // closed, manifold, oriented and free of self-intersections, else exit 1 naming what is left.
 #include "cli_common.h"
@@ -71,13 +71,13 @@ Action add_repair_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "repair",
       "Mend a dirty surface (weld split vertices, drop degenerate and duplicate faces, split non-manifold edges "
-      "and vertices, orient consistently and outward, fill holes up to --max-hole, cut self-intersections and keep the "
-      "union's boundary); written only if it is then "
-      "ready for tetrahedralize");
+      "and vertices, orient consistently and outward, fill holes: all but an open sheet's outline, or those up to "
+      "--max-hole; cut self-intersections and keep the union's boundary); written only if it is then ready for "
+      "tetrahedralize");
   cmd->add_option("input", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output, "Repaired surface (.off .obj .ply .stl)")->required();
   add_parameter(*cmd, repair_parameters().weld_tolerance, o->params.weld_tolerance);
-  add_parameter(*cmd, repair_parameters().max_hole, o->params.max_hole);
+  add_auto_parameter(*cmd, repair_parameters().max_hole, o->params.max_hole);
   add_parameter(*cmd, repair_parameters().keep_cavities, o->params.keep_cavities);
   cmd->add_option("--json", o->json, "Write the counts of each step and the readiness as JSON (- for standard output)");
   return [o] { return run_repair(*o); };

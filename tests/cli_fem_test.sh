@@ -139,7 +139,7 @@ import json; r = json.load(open('boxes.json')); q = json.load(open('boxes_qualit
 assert r['intersecting_pairs'] > 0 and r['removed_faces'] > 0 and r['readiness']['ready'], r
 assert q['components'] == 1 and q['self_intersections'] == 0 and abs(q['volume'] - (2 - 0.5 * 0.75 * 0.7)) < 1e-12, q" &&
   ok || bad "repair crossing boxes: the union's counts or volume"
-# The open box's missing top is 2.3 x its diagonal around: a sheet's outline by default (left
+# The open box is a bowl, every face turned up or sideways: a sheet's outline by default (left
 # open, named, nothing written), a hole with --max-hole 3 (filled: the closed cube, 12 faces).
 "$bin" repair open_box.off -o box_filled.off > stdout.txt 2> err.txt; expect_exit "repair open box" 1 $?
 grep -q "filled 0 holes (1 left open)" err.txt && grep -q "not mended yet: 4 border edges" err.txt &&
@@ -151,6 +151,18 @@ import json; j = json.load(open('box.json')); h = j['holes']
 assert j['faces'] == 12 and j['filled_holes'] == 1 and len(h) == 1 and h[0]['rim_vertices'] == 4, j
 assert h[0]['patch_faces'] == 2 and abs(h[0]['patch_area'] - 1) < 1e-12 and h[0]['plane_distance'] < 1e-12, h" &&
   ok || bad "repair open box --max-hole 3: the done line or the holes"
+# Without one of its top's two faces the cube is a solid missing a part, filled by default (and by
+# --max-hole auto) although its rim is 2.0 x the diagonal, which --max-hole 0.5 leaves open.
+grep -vx "3 4 5 6" cube.off | sed "2s/8 12 0/8 11 0/" > half_top.off
+for auto in "" "--max-hole auto"; do
+  "$bin" repair half_top.off -o half_top_filled.off $auto > stdout.txt 2> err.txt
+  expect_exit "repair half top $auto" 0 $?
+  grep -q "filled 1 holes (0 left open)" stdout.txt &&
+    grep -q "; closed, manifold, oriented, no self-intersections (12 faces)" stdout.txt &&
+    ok || bad "repair half top $auto: the done line"
+done
+"$bin" repair half_top.off -o half_top_filled.off --max-hole 0.5 > stdout.txt 2> err.txt
+expect_exit "repair half top --max-hole 0.5" 1 $?
 
 # Real TetGen output in every format, read back by meshio and gmsh with the counts and the volume.
 mkdir -p formats

@@ -145,7 +145,7 @@ std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
                "weld split vertices, drop degenerate and duplicate faces, split non-manifold edges and vertices, "
                "orient, fill holes and remove self-intersections in the input before it is checked (meshprep repair)"),
           number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance),
-          number("repair", repair_parameters().max_hole, r.params.max_hole),
+          number_or_auto("repair", repair_parameters().max_hole, r.params.max_hole),
           flag("repair", repair_parameters().keep_cavities, r.params.keep_cavities)};
 }
 

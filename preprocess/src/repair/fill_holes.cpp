@@ -2,17 +2,22 @@
 
 #include "repair/fair_patch.h"
 #include "repair/refine_patch.h"
+#include "repair/sheet_outlines.h"
 #include "repair/triangulate_hole.h"
 #include "shared/triangle_angles.h"
 
 #include "meshprep/quality/face_edges.h"
+#include "meshprep/quality/surface_distance.h"
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
+#include <optional>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
@@ -58,9 +63,16 @@ double plane_distance(const std::vector<Vec3>& points, const std::vector<std::ui
   return distance;
 }
 
+// "0.97".
+std::string two_digits(double value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.2f", value);
+  return text;
+}
+
 }  // namespace
 
-std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
+std::vector<RepairHole> fill_holes(TriangleSoup& soup, std::optional<double> max_hole) {
   const std::vector<FaceEdge> uses = sorted_face_edges(soup);
   std::unordered_map<std::uint32_t, Border> border;  // by its first vertex, as its face runs it
   std::vector<std::uint32_t> starts;
@@ -100,7 +112,6 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
     neighbours[a].push_back(b);
     neighbours[b].push_back(a);
   }
-  std::vector<RepairHole> holes;
   std::unordered_set<std::uint32_t> walked;
   // Where the walk goes on from `v`: another copy of v's point whose gap is not walked yet, else v.
   const auto leave = [&](std::uint32_t v) {
@@ -110,27 +121,54 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length) {
         if (copy != v && !walked.count(copy)) return copy;
     return v;
   };
-  for (const std::uint32_t start : starts) {
-    if (walked.count(start)) continue;
+  // Every loop is walked before any is filled: the default rule weighs each against the others.
+  struct Loop {
     HoleRim rim;
     RepairHole hole;
+    LoopBorder border;
+  };
+  std::vector<Loop> loops;
+  for (const std::uint32_t start : starts) {
+    if (walked.count(start)) continue;
+    Loop loop;
+    loop.border.face = border.at(start).face;
+    const Vec3 origin = soup.points[start];
     std::uint32_t v = start;
     do {
       walked.insert(v);
       const Border& b = border.at(v);
-      rim.vertices.push_back(lowest[v]);
-      rim.face_normals.push_back(unit_normal(soup, b.face));
-      hole.rim_length += (soup.points[b.to] - soup.points[v]).norm();
+      loop.rim.vertices.push_back(lowest[v]);
+      loop.rim.face_normals.push_back(unit_normal(soup, b.face));
+      loop.hole.rim_length += (soup.points[b.to] - soup.points[v]).norm();
+      loop.border.vector_area += (soup.points[v] - origin).cross(soup.points[b.to] - origin) / 2;
       v = leave(b.to);
     } while (border.count(v) && !walked.count(v));
-    hole.rim_vertices = rim.vertices.size();
-    if (lowest[v] != lowest[start])
+    loop.hole.rim_vertices = loop.rim.vertices.size();
+    loop.border.closes = lowest[v] == lowest[start];
+    loops.push_back(std::move(loop));
+  }
+  std::vector<LoopSheet> sheets;
+  if (!max_hole) {
+    std::vector<LoopBorder> borders;
+    for (const Loop& loop : loops) borders.push_back(loop.border);
+    sheets = sheet_outlines(soup, borders);
+  }
+  const double max_rim_length = max_hole ? *max_hole * bbox_diagonal(soup) : 0;
+  std::vector<RepairHole> holes;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const HoleRim& rim = loops[l].rim;
+    RepairHole& hole = loops[l].hole;
+    if (!loops[l].border.closes)
       hole.left_open = "its border does not close into a loop (a non-manifold or inconsistently oriented border)";
-    else if (hole.rim_length > max_rim_length)
+    else if (max_hole && hole.rim_length > max_rim_length)
       hole.left_open = "its rim is longer than max_hole";
+    else if (!max_hole && sheets[l].outline && sheets[l].one_sidedness > kSheetOneSidedness)
+      hole.left_open = "it is the outline of an open sheet (one-sidedness " + two_digits(sheets[l].one_sidedness) +
+                       " > " + two_digits(kSheetOneSidedness) +
+                       ": a terrain, a mask or a bowl, not a solid's missing part; given a max_hole, loops are filled by length)";
     else if (rim.vertices.size() > kLongestRim)
       hole.left_open = "its rim has more than " + std::to_string(kLongestRim) + " vertices";
-    else if (rim.vertices.size() == 3 && is_face(soup, border.at(start).face, rim.vertices, lowest))
+    else if (rim.vertices.size() == 3 && is_face(soup, loops[l].border.face, rim.vertices, lowest))
       hole.left_open = "its rim is a lone face's border (a patch would repeat the face)";
     if (!hole.left_open.empty()) {
       holes.push_back(std::move(hole));

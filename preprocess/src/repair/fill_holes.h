@@ -4,14 +4,16 @@
 #include "meshprep/core/mesh.h"
 #include "meshprep/preprocess/repair/repair.h"
 
+#include <optional>
 #include <vector>
 
 namespace meshprep::detail {
 
-/// Fills each boundary loop no longer than `max_rim_length` (in the surface's units) after Liepa
-/// 2003: triangulate_hole, refine_patch, fair_patch. The faces and vertices are appended to
-/// `soup`; every loop is reported, filled or not (and why not).
+/// Fills boundary loops after Liepa 2003: triangulate_hole, refine_patch, fair_patch. Given
+/// `max_hole` (RepairParams'), each loop no longer than max_hole x the bounding box's diagonal;
+/// without it, each loop but an open sheet's outline (sheet_outlines.h). The faces and vertices are
+/// appended to `soup`; every loop is reported, filled or not (and why not).
 /// \pre the surface is oriented and manifold (split_nonmanifold, orient_components).
-std::vector<RepairHole> fill_holes(TriangleSoup& soup, double max_rim_length);
+std::vector<RepairHole> fill_holes(TriangleSoup& soup, std::optional<double> max_hole);
 
 }  // namespace meshprep::detail

@@ -9,7 +9,6 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/repair/repair_parameters.h"
-#include "meshprep/quality/surface_distance.h"
 
 #include <chrono>
 #include <cmath>
@@ -19,7 +18,7 @@ namespace meshprep {
 RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (!(params.weld_tolerance >= 0 && std::isfinite(params.weld_tolerance)))
     throw InvalidInput("repair: the weld tolerance must be a finite number >= 0");
-  check_parameter("repair", repair_parameters().max_hole, params.max_hole);
+  if (params.max_hole) check_parameter("repair", repair_parameters().max_hole, *params.max_hole);
   const auto start = std::chrono::steady_clock::now();
   RepairResult result;
   result.weld_distance = params.weld_tolerance * detail::median_edge_length(surface);
@@ -35,7 +34,7 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.components = orient.components;
   result.flipped_faces = orient.flipped_faces;
   result.inverted_components = orient.inverted_components;
-  result.holes = detail::fill_holes(surface, params.max_hole * bbox_diagonal(surface));
+  result.holes = detail::fill_holes(surface, params.max_hole);
   for (const RepairHole& hole : result.holes) ++(hole.filled ? result.filled_holes : result.open_holes);
   // A bow-tie on a hole's rim is one fan again once the patch joins its fans (fill_holes.cpp):
   // its copies are welded back, and what is still not manifold is split again.

@@ -1,7 +1,9 @@
 // The repair's non-manifold split and hole filling (repair.h, steps 3 and 5) on hand-made cases:
-// bow-tie vertices, two cubes on one edge, a square hole in a plane, a sphere without its cap.
+// bow-tie vertices, two cubes on one edge, a square hole in a plane, a sphere without its cap, and
+// which loops the default fills: sheets (flat, wavy, bowls) against solids missing a part.
 #include "meshprep/preprocess/repair/repair.h"
 #include "meshprep/quality/self_intersections.h"
+#include "repair/sheet_outlines.h"
 #include "meshprep/quality/topology.h"
 #include "meshprep/quality/triangle_metrics.h"
 
@@ -40,6 +42,37 @@ TriangleSoup grid_with_square_hole() {
 // the diagonal (3.3: the box lost its top).
 TriangleSoup sphere_without_cap() {
   return without(test::icosphere(3), [](const Vec3& c) { return c.z() > 0.7; });
+}
+
+// The unit icosphere's faces within `degrees` of its north pole: a bowl up to 90, then a sphere
+// missing a cap of 180 - degrees around its south pole.
+TriangleSoup spherical_cap(double degrees) {
+  const double lowest = std::cos(degrees * M_PI / 180);
+  return without(test::icosphere(4), [&](const Vec3& c) { return c.normalized().z() < lowest; });
+}
+
+// A 24 x 24 grid as the terrain z = 0.3 x + 3 sin(x / 3) cos(y / 4): tilted 17 degrees, slopes
+// up to 53 degrees.
+TriangleSoup wavy_terrain() {
+  TriangleSoup soup = test::grid(24);
+  for (Vec3& p : soup.points) p.z() = 0.3 * p.x() + 3 * std::sin(p.x() / 3) * std::cos(p.y() / 4);
+  return soup;
+}
+
+// The same without its 6 x 6 middle cells.
+TriangleSoup wavy_terrain_with_square_hole() {
+  return without(wavy_terrain(), [](const Vec3& c) { return c.x() > 9 && c.x() < 15 && c.y() > 9 && c.y() < 15; });
+}
+
+// The side of a cylinder of radius 1 and height 1: two loops of 32 corners, 2 pi each (4.4 x the
+// diagonal).
+TriangleSoup open_tube() {
+  return without(test::cylinder_with_fan_caps(32), [](const Vec3& c) { return c.z() == 0 || c.z() == 1; });
+}
+
+// The one-sidedness of the component of the soup's first face (sheet_outlines.h).
+double one_sidedness(const TriangleSoup& soup) {
+  return detail::sheet_outlines(soup, {detail::LoopBorder{0, Vec3::Zero(), true}})[0].one_sidedness;
 }
 
 TEST(RepairSplit, ABowTieOfTwoTrianglesBecomesTwoSheets) {
@@ -163,12 +196,12 @@ TEST(RepairHoles, TwoHolesTouchingAtACornerMakeTheCornerManifold) {
   EXPECT_EQ(t.boundary_loops, 1u);
 }
 
+// By default: the rim is 1.8 x the diagonal, but the sphere wraps 134 degrees around its pole
+// (one-sidedness 0.34), a solid missing a part.
 TEST(RepairHoles, ASphereWithoutItsCapIsClosedNearTheSphere) {
   TriangleSoup soup = sphere_without_cap();
   const std::size_t kept_points = soup.points.size();
-  RepairParams params;
-  params.max_hole = 2.0;
-  const RepairResult r = repair(soup, params);
+  const RepairResult r = repair(soup);
   ASSERT_EQ(r.holes.size(), 1u);
   ASSERT_TRUE(r.holes[0].filled) << r.holes[0].left_open << ", rim " << r.holes[0].rim_length;
   const Topology t = analyze_topology(soup);
@@ -182,7 +215,9 @@ TEST(RepairHoles, ASphereWithoutItsCapIsClosedNearTheSphere) {
 TEST(RepairHoles, ALoopLongerThanMaxHoleIsLeftOpenAndReported) {
   TriangleSoup soup = sphere_without_cap();
   const std::size_t faces = soup.triangles.size();
-  const RepairResult r = repair(soup);  // 0.5 x the diagonal
+  RepairParams params;
+  params.max_hole = 0.5;
+  const RepairResult r = repair(soup, params);
   ASSERT_EQ(r.holes.size(), 1u);
   EXPECT_FALSE(r.holes[0].filled);
   EXPECT_NE(r.holes[0].left_open.find("max_hole"), std::string::npos);
@@ -190,24 +225,95 @@ TEST(RepairHoles, ALoopLongerThanMaxHoleIsLeftOpenAndReported) {
   EXPECT_EQ(soup.triangles.size(), faces);
 }
 
+// By length and by default (the one-sidedness is a ratio of areas).
 TEST(RepairHoles, TheScaleDoesNotChangeTheCounts) {
-  RepairParams params;
-  params.max_hole = 2.0;
-  for (const auto& make : {grid_with_square_hole, sphere_without_cap}) {
-    TriangleSoup unit = make();
-    const RepairResult reference = repair(unit, params);
-    for (const double s : {1e-3, 1e3}) {
-      TriangleSoup soup = scaled(make(), s);
-      const RepairResult r = repair(soup, params);
-      ASSERT_EQ(r.holes.size(), reference.holes.size()) << s;
-      EXPECT_EQ(soup.triangles.size(), unit.triangles.size()) << s;
-      for (std::size_t h = 0; h < r.holes.size(); ++h) {
-        EXPECT_EQ(r.holes[h].filled, reference.holes[h].filled) << s;
-        EXPECT_EQ(r.holes[h].patch_faces, reference.holes[h].patch_faces) << s;
-        EXPECT_NEAR(r.holes[h].patch_area, reference.holes[h].patch_area * s * s, 1e-9 * s * s) << s;
+  RepairParams by_length;
+  by_length.max_hole = 2.0;
+  for (const RepairParams& params : {RepairParams{}, by_length}) {
+    for (const auto& make : {grid_with_square_hole, sphere_without_cap, wavy_terrain_with_square_hole}) {
+      TriangleSoup unit = make();
+      const RepairResult reference = repair(unit, params);
+      for (const double s : {1e-3, 1e3}) {
+        TriangleSoup soup = scaled(make(), s);
+        const RepairResult r = repair(soup, params);
+        ASSERT_EQ(r.holes.size(), reference.holes.size()) << s;
+        EXPECT_EQ(soup.triangles.size(), unit.triangles.size()) << s;
+        for (std::size_t h = 0; h < r.holes.size(); ++h) {
+          EXPECT_EQ(r.holes[h].filled, reference.holes[h].filled) << s;
+          EXPECT_EQ(r.holes[h].patch_faces, reference.holes[h].patch_faces) << s;
+          EXPECT_NEAR(r.holes[h].patch_area, reference.holes[h].patch_area * s * s, 1e-9 * s * s) << s;
+        }
       }
     }
   }
+}
+
+// 1 for every height field, then sin^2 t / (1 + cos^2 t) for a cap of half angle t past 90
+// degrees (sheet_outlines.cpp), to the icosphere's zigzag rim; about 0 for a sphere with a small
+// hole, or a tube open at both ends.
+TEST(RepairHoles, OneSidednessIsOneForHeightFieldsAndFallsAsACapWrapsTheSphere) {
+  EXPECT_NEAR(one_sidedness(test::grid(12)), 1.0, 1e-12);
+  EXPECT_NEAR(one_sidedness(wavy_terrain()), 1.0, 1e-12);
+  EXPECT_NEAR(one_sidedness(spherical_cap(90)), 1.0, 1e-12);
+  for (const double degrees : {110.0, 125.0, 150.0}) {
+    const double c = std::cos(degrees * M_PI / 180);
+    EXPECT_NEAR(one_sidedness(spherical_cap(degrees)), (1 - c * c) / (1 + c * c), 0.05) << degrees;
+  }
+  EXPECT_LT(one_sidedness(spherical_cap(175)), 0.01);
+  EXPECT_LT(one_sidedness(open_tube()), 1e-9);
+}
+
+// A sheet's outline stays open however it is shaped; a hole in the sheet is filled.
+TEST(RepairHoles, ByDefaultASheetsOutlineStaysOpenAndItsHolesAreFilled) {
+  for (const auto& make : {grid_with_square_hole, wavy_terrain_with_square_hole}) {
+    TriangleSoup soup = make();
+    const RepairResult r = repair(soup);
+    ASSERT_EQ(r.holes.size(), 2u);
+    EXPECT_EQ(r.filled_holes, 1u);
+    for (const RepairHole& h : r.holes) {
+      EXPECT_EQ(h.filled, h.rim_vertices == 24u) << h.rim_vertices;
+      if (!h.filled) {
+        EXPECT_NE(h.left_open.find("outline of an open sheet"), std::string::npos) << h.left_open;
+      }
+    }
+  }
+}
+
+// Bowls up to a hemisphere are height fields: an open box and a hemisphere stay open, and so does
+// a cap 10 degrees deeper (one-sidedness 0.94).
+TEST(RepairHoles, ByDefaultBowlsStayOpen) {
+  const TriangleSoup open_box = without(test::subdivided_cube(4), [](const Vec3& c) { return c.z() == 4; });
+  for (const TriangleSoup& bowl : {open_box, spherical_cap(90), spherical_cap(100)}) {
+    TriangleSoup soup = bowl;
+    const RepairResult r = repair(soup);
+    ASSERT_EQ(r.holes.size(), 1u);
+    EXPECT_FALSE(r.holes[0].filled);
+    EXPECT_EQ(soup.triangles.size(), bowl.triangles.size());
+  }
+}
+
+// A cap of 120 degrees (one-sidedness 0.6) wraps the sphere past the bowl: a solid missing a part,
+// closed; so is the tube, whose two loops no direction sees one side of.
+TEST(RepairHoles, ByDefaultASolidsMissingPartIsFilledHoweverLong) {
+  for (const TriangleSoup& open : {spherical_cap(120), open_tube()}) {
+    TriangleSoup soup = open;
+    const RepairResult r = repair(soup);
+    EXPECT_EQ(r.open_holes, 0u);
+    const Topology t = analyze_topology(soup);
+    EXPECT_TRUE(t.closed && t.manifold && t.oriented);
+    EXPECT_GT(signed_volume(soup), 0);
+  }
+}
+
+// Each component is judged alone: the sphere's hole is filled, the flat sheet beside it stays open.
+TEST(RepairHoles, ByDefaultEachComponentIsJudgedAlone) {
+  TriangleSoup soup = test::merged(sphere_without_cap(), test::translated(test::grid(4), {3, 0, 0}));
+  const RepairResult r = repair(soup);
+  ASSERT_EQ(r.holes.size(), 2u);
+  EXPECT_EQ(r.filled_holes, 1u);
+  const Topology t = analyze_topology(soup);
+  EXPECT_EQ(t.boundary_loops, 1u);
+  EXPECT_EQ(t.components, 2u);
 }
 
 }  // namespace

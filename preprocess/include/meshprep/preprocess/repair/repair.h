@@ -12,9 +12,10 @@
 ///    again by the hole's patch, step 5);
 /// 4. orientation: each edge-connected component is made consistent from its first face, across
 ///    its manifold edges, and a closed component enclosing negative volume is turned outward;
-/// 5. holes: each boundary loop no longer than max_hole x the bounding box's diagonal is filled
-///    after Liepa 2003 (a minimum-dihedral, then minimum-area triangulation, refined to the
-///    density of the surface around it and faired with a bi-Laplacian); longer loops stay open.
+/// 5. holes: each boundary loop is filled after Liepa 2003 (a minimum-dihedral, then minimum-area
+///    triangulation, refined to the density of the surface around it and faired with a
+///    bi-Laplacian) but an open sheet's outline, or with max_hole given, each loop no longer than
+///    max_hole x the bounding box's diagonal; the others stay open.
 /// 6. self-intersections: every face is cut exactly along the curves where others cross or touch
 ///    it, and the pieces bounding the union of what the surface encloses are kept (those just
 ///    outside which the winding number is 0). Overlapping parts become one solid, a wall two parts
@@ -31,6 +32,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,9 +43,10 @@ struct RepairParams {
   /// its vertices writes each copy with the same digits, so exact copies dominate; the margin
   /// takes exporters that round differently per copy, and stays far below any real edge.
   double weld_tolerance = 1e-3;
-  /// Boundary loops longer than this fraction of the bounding box's diagonal are left open
-  /// (repair_parameters.cpp says why 0.5).
-  double max_hole = 0.5;
+  /// Given, boundary loops longer than this fraction of the bounding box's diagonal are left open;
+  /// unset ("auto"), every loop is filled but an open sheet's outline (a terrain's, a mask's: no
+  /// solid's hole). repair_parameters.cpp says why length cannot tell them apart.
+  std::optional<double> max_hole;
   /// A closed part inside another that touches nothing is kept as the wall of a void (facing
   /// inwards) instead of being dropped.
   bool keep_cavities = false;
