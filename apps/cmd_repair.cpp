@@ -42,7 +42,7 @@ int run_repair(const RepairOptions& o) {
   TriangleSoup surface = read_soup(o.input);
   if (surface.triangles.empty()) throw InvalidInput(o.input + ": no faces to repair");
   const RepairResult result = repair(surface, o.params);
-  const Readiness readiness = check_fem_readiness(surface);
+  const Readiness readiness = check_fem_readiness(surface, result.free_of_self_intersections);
   if (!readiness.ready()) {
     std::string left;
     for (const ReadinessProblem& p : readiness.problems) left += (left.empty() ? "" : "; ") + p.what;

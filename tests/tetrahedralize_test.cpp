@@ -146,6 +146,20 @@ TEST(Readiness, IntersectingBoxesAreNamed) {
   EXPECT_EQ(diagnosis.triangles.size(), r.problems.back().faces.size());
 }
 
+// The repair's own search stands in for the check's only on the very surface it searched: a
+// caller's word is taken, but not across a weld, which changes what touches.
+TEST(Readiness, AKnownFreeSurfaceSkipsTheSearchUnlessWelded) {
+  const TriangleSoup a = test::cube();
+  const TriangleSoup crossing = test::merged(a, test::translated(a, {0.5, 0.25, 0.3}));
+  EXPECT_TRUE(check_fem_readiness(crossing, true).ready());  // taken on trust: what the flag means
+  TriangleSoup split = crossing;
+  split.points.push_back(split.points[split.triangles[0][0]]);  // a copy of a used vertex, used instead
+  split.triangles[0][0] = static_cast<std::uint32_t>(split.points.size() - 1);
+  const Readiness r = check_fem_readiness(split, true);
+  ASSERT_FALSE(r.ready());
+  EXPECT_EQ(r.problems.back().check, "self_intersections");
+}
+
 TEST(Readiness, NonManifoldEdgeAndDuplicateFaces) {
   TriangleSoup fin = test::cube();
   fin.points.emplace_back(0.5, 0.5, -1.0);

@@ -34,7 +34,7 @@ std::vector<std::size_t> concat(std::vector<std::size_t> a, const std::vector<st
 
 }  // namespace
 
-Readiness check_fem_readiness(const TriangleSoup& input) {
+Readiness check_fem_readiness(const TriangleSoup& input, bool known_free_of_self_intersections) {
   Readiness r;
   // Split vertices first: they open every edge along them and make touching faces count as
   // intersecting, so the other checks look at the welded surface and describe its shape.
@@ -79,7 +79,9 @@ Readiness check_fem_readiness(const TriangleSoup& input) {
   add(r, "duplicate_faces", topo.duplicate_faces,
       count_of(topo.duplicate_faces, "face repeats", "faces repeat") + " another face's vertices",
       "delete the listed duplicate faces", topo.duplicate_face_indices);
-  const SelfIntersections si = find_self_intersections(surface, 100000);
+  const SelfIntersections si = known_free_of_self_intersections && welding.merged == 0
+                                   ? SelfIntersections{}
+                                   : find_self_intersections(surface, 100000);
   std::vector<std::size_t> si_faces;
   std::ostringstream first_pairs;
   for (std::size_t i = 0; i < si.pairs.size() && si_faces.size() < kListed; ++i) {

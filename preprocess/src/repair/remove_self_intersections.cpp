@@ -281,7 +281,10 @@ SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool kee
   for (int round = 0; round < 3; ++round) {
     const Pass pass = one_pass(surface, keep_cavities);
     if (round == 0) counts.intersecting_pairs = pass.pairs;
-    if (pass.cut_faces == 0 && pass.removed_faces == 0 && pass.cavities == 0) break;
+    if (pass.cut_faces == 0 && pass.removed_faces == 0 && pass.cavities == 0) {
+      counts.found_none = pass.pairs == 0;
+      break;
+    }
     ++counts.rounds;
     counts.cut_faces += pass.cut_faces;
     counts.removed_faces += pass.removed_faces;

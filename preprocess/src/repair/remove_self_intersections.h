@@ -15,6 +15,7 @@ struct SelfIntersectionCounts {
   std::size_t nested_components = 0;   ///< parts inside another that touch nothing, dropped
   std::size_t cavities = 0;            ///< such parts kept as the walls of voids (keep_cavities)
   std::size_t separated_pinches = 0;   ///< vertex copies moved apart (separate_pinches.h)
+  bool found_none = false;  ///< the last search was on the surface as returned and found no pair
   std::size_t rounds = 0;              ///< passes made; a pass after the first mends its rounding
 };
 

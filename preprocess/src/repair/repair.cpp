@@ -51,6 +51,7 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.nested_components = crossing.nested_components;
   result.cavities = crossing.cavities;
   result.separated_pinches = crossing.separated_pinches;
+  result.free_of_self_intersections = crossing.found_none;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -7,21 +7,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
 
 namespace meshprep::detail {
 namespace {
-
-// Teschner et al.'s spatial hash, in unsigned arithmetic (wraps instead of overflowing).
-struct CellHash {
-  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-    const auto u = [](std::int64_t x) { return static_cast<std::uint64_t>(x); };
-    return static_cast<std::size_t>(u(c[0]) * 73856093u ^ u(c[1]) * 19349663u ^ u(c[2]) * 83492791u);
-  }
-};
 
 // Cell coordinates are whole numbers of `distance`: beyond 2^53 of them they stop being exact and
 // then overflow an int64, so a distance that small against the coordinates welds exact copies only.
@@ -45,25 +36,33 @@ std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, 
   for (std::size_t i = 1; i < order.size(); ++i)
     if (soup.points[order[i]] == soup.points[order[i - 1]]) joined += clusters.unite(order[i], order[i - 1]);
   if (!(distance > 0) || !grid_fits(soup, distance)) return joined;
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>, CellHash> cells;
-  const auto cell_of = [distance](const Vec3& p) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p.x() / distance)),
-                                       static_cast<std::int64_t>(std::floor(p.y() / distance)),
-                                       static_cast<std::int64_t>(std::floor(p.z() / distance))};
+  // The used vertices sorted by their cell (x, y, z): the cells of one column (x, y) are a run,
+  // found by a binary search, so a vertex's 27 neighbouring cells are 9 searches.
+  struct Cell {
+    std::int64_t x, y, z;
+    std::uint32_t vertex;
+    bool operator<(const Cell& o) const { return std::tie(x, y, z, vertex) < std::tie(o.x, o.y, o.z, o.vertex); }
   };
-  for (const std::uint32_t v : order) cells[cell_of(soup.points[v])].push_back(v);
-  const double squared = distance * distance;
+  std::vector<Cell> cells;
+  cells.reserve(order.size());
   for (const std::uint32_t v : order) {
-    const std::array<std::int64_t, 3> c = cell_of(soup.points[v]);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto found = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (found == cells.end()) continue;
-          for (const std::uint32_t w : found->second)
-            if (w > v && (soup.points[w] - soup.points[v]).squaredNorm() <= squared) joined += clusters.unite(v, w);
-        }
+    const Vec3& p = soup.points[v];
+    cells.push_back({static_cast<std::int64_t>(std::floor(p.x() / distance)),
+                     static_cast<std::int64_t>(std::floor(p.y() / distance)),
+                     static_cast<std::int64_t>(std::floor(p.z() / distance)), v});
   }
+  std::sort(cells.begin(), cells.end());
+  const double squared = distance * distance;
+  for (const Cell& c : cells)
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const Cell from{c.x + dx, c.y + dy, c.z - 1, 0};
+        for (auto it = std::lower_bound(cells.begin(), cells.end(), from);
+             it != cells.end() && it->x == from.x && it->y == from.y && it->z <= c.z + 1; ++it)
+          if (it->vertex > c.vertex &&
+              (soup.points[it->vertex] - soup.points[c.vertex]).squaredNorm() <= squared)
+            joined += clusters.unite(c.vertex, it->vertex);
+      }
   return joined;
 }
 
@@ -82,44 +81,56 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   // faces besides them, are a wall two solids share (each faces into the other): all go, and the
   // solids become one. Elsewhere (a solid with one face written twice) the first stays.
   std::vector<Triangle> faces;
-  struct Copies {
-    std::size_t first;  // in faces
-    std::size_t count;
-    bool forward, both_ways;
-  };
-  std::map<std::array<std::uint32_t, 3>, Copies> seen;
-  std::unordered_map<std::uint64_t, std::size_t> edge_uses;
+  faces.reserve(soup.triangles.size());
   for (Triangle t : soup.triangles) {
     for (std::uint32_t& v : t) v = clusters.find(v);
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
       ++counts.degenerate_faces;
-      continue;
-    }
-    for (int i = 0; i < 3; ++i) ++edge_uses[edge_key(t[i], t[(i + 1) % 3])];
-    std::array<std::uint32_t, 3> sorted{t[0], t[1], t[2]};
-    std::sort(sorted.begin(), sorted.end());
-    // (a, b, c) is a rotation of its sorted order iff an even number of its pairs are inverted.
-    const bool forward = ((t[0] > t[1]) + (t[1] > t[2]) + (t[0] > t[2])) % 2 == 0;
-    const auto [it, added] = seen.emplace(sorted, Copies{faces.size(), 1, forward, false});
-    if (!added) {
-      ++counts.duplicate_faces;
-      ++it->second.count;
-      it->second.both_ways = it->second.both_ways || it->second.forward != forward;
-      continue;
-    }
-    faces.push_back(t);
+    else
+      faces.push_back(t);
   }
-  std::vector<char> wall(faces.size(), 0);
-  for (const auto& [vertices, copies] : seen) {
-    if (!copies.both_ways) continue;
-    const auto others = [&](std::uint32_t a, std::uint32_t b) { return edge_uses[edge_key(a, b)] - copies.count; };
-    if (others(vertices[0], vertices[1]) >= 2 && others(vertices[1], vertices[2]) >= 2 &&
-        others(vertices[0], vertices[2]) >= 2)
-      wall[copies.first] = 1, ++counts.duplicate_faces;
+  // Faces on the same three vertices are neighbours once sorted by their sorted corners, then by
+  // their place in the file.
+  using Corners = std::array<std::uint32_t, 3>;
+  std::vector<std::pair<Corners, std::uint32_t>> order(faces.size());
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    Corners sorted = faces[f];
+    std::sort(sorted.begin(), sorted.end());
+    order[f] = {sorted, f};
+  }
+  std::sort(order.begin(), order.end());
+  // (a, b, c) is a rotation of its sorted order iff an even number of its pairs are inverted.
+  const auto forward = [&faces](std::uint32_t f) {
+    const Triangle& t = faces[f];
+    return ((t[0] > t[1]) + (t[1] > t[2]) + (t[0] > t[2])) % 2 == 0;
+  };
+  std::vector<char> removed(faces.size(), 0);
+  std::vector<std::pair<std::uint32_t, std::size_t>> both_ways;  // first face, copies
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    bool opposite = false;
+    for (; j < order.size() && order[j].first == order[i].first; ++j) {
+      removed[order[j].second] = 1;
+      ++counts.duplicate_faces;
+      opposite = opposite || forward(order[j].second) != forward(order[i].second);
+    }
+    if (opposite) both_ways.emplace_back(order[i].second, j - i);
+    i = j;
+  }
+  if (!both_ways.empty()) {
+    std::unordered_map<std::uint64_t, std::size_t> edge_uses;
+    for (const Triangle& t : faces)
+      for (int i = 0; i < 3; ++i) ++edge_uses[edge_key(t[i], t[(i + 1) % 3])];
+    for (const auto& [first, copies] : both_ways) {
+      const Triangle& t = faces[first];
+      bool wall = true;
+      for (int i = 0; i < 3; ++i) wall = wall && edge_uses[edge_key(t[i], t[(i + 1) % 3])] >= copies + 2;
+      if (wall) removed[first] = 1, ++counts.duplicate_faces;
+    }
   }
   std::size_t kept = 0;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    if (!wall[f]) faces[kept++] = faces[f];
+    if (!removed[f]) faces[kept++] = faces[f];
   faces.resize(kept);
 
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);

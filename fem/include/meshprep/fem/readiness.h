@@ -32,7 +32,10 @@ struct Readiness {
 
 /// Check `surface` for tetrahedralisation. Vertices at exactly the same place (a file that splits
 /// its vertices) are one problem, "welded"; the other checks then describe the welded surface.
-Readiness check_fem_readiness(const TriangleSoup& surface);
+/// A caller that has just searched this very surface for self-intersections and found none (the
+/// repair) says so with `known_free_of_self_intersections`: the search, the check's costliest
+/// part, is then skipped, unless vertices had to be welded (which changes what touches).
+Readiness check_fem_readiness(const TriangleSoup& surface, bool known_free_of_self_intersections = false);
 
 /// The offending faces of every problem as a small soup (their vertices renumbered), to open
 /// next to the input in a viewer.

@@ -87,6 +87,9 @@ struct RepairResult {
   std::size_t nested_components = 0;   ///< closed parts inside another touching nothing, dropped
   std::size_t cavities = 0;            ///< such parts kept as cavities (keep_cavities)
   std::size_t separated_pinches = 0;   ///< copies of a point where parts touch, moved apart
+  /// The step's last search for intersecting pairs was on the surface as returned and found none
+  /// (check_fem_readiness can then skip its own).
+  bool free_of_self_intersections = false;
   double seconds = 0;
 };
 
