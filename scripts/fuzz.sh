@@ -6,14 +6,14 @@
 # 2 GB; the input is kept in build-fuzz/artifacts/TARGET/ (replay it: build-fuzz/bin/fuzz_TARGET FILE).
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]
 #   (targets: off obj ply stl xyz, the tet mesh readers msh vtu vtk medit tetgen, config, and the
-#   geometric stages on tiny decoded meshes self_intersections simplify)
+#   geometric stages on tiny decoded meshes self_intersections simplify repair)
 # FUZZ_BUILD_DIR=DIR uses an existing fuzzer build (MESHPREP_BUILD_FUZZERS=ON) instead of build-fuzz/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(off obj ply stl xyz msh vtu vtk medit tetgen config self_intersections simplify)
+[ ${#targets[@]} -gt 0 ] || targets=(off obj ply stl xyz msh vtu vtk medit tetgen config self_intersections simplify repair)
 build=${FUZZ_BUILD_DIR:-build-fuzz}  # scripts/run-tests.sh points it at its sanitizer build
 
 if ! grep -q '^MESHPREP_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then

@@ -5,8 +5,9 @@
 #      errors) into build-sanitize/: the readers' and the quality module's tests (meshprep_tests),
 #      then each reader's fuzz target 10 s on its seeds: the surface readers and the tet mesh
 #      readers (compiled alone, without the rest of meshprep::fem: ~40 s more to build, 50 s to run),
-#      and the two geometric stages on tiny decoded meshes, 10 s each: the self-intersection search
-#      against its exact reference, and simplify (meshprep::preprocess under the sanitizers).
+#      and the three geometric stages on tiny decoded meshes, 10 s each: the self-intersection
+#      search against its exact reference, simplify, and repair (meshprep::preprocess under the
+#      sanitizers; the repair's exact cuts meet every degenerate case of a grid).
 # The second pass is kept to the modules every input goes through first, so that both passes fit
 # CI's 15-minute budget on 2 cores (a sanitizer build of everything takes ~12 minutes there).
 # `--sanitize-all` builds everything under the sanitizers and runs every test and fuzz target.
@@ -35,7 +36,7 @@ if [ "$mode" = --sanitize-all ]; then
   FUZZ_BUILD_DIR=build-sanitize bash scripts/fuzz.sh 10
 else
   readers=(off obj ply stl xyz msh vtu vtk medit tetgen)
-  stages=(self_intersections simplify)
+  stages=(self_intersections simplify repair)
   cmake --build build-sanitize -j "$jobs" --target meshprep_tests "${readers[@]/#/fuzz_}" "${stages[@]/#/fuzz_}"
   build-sanitize/bin/meshprep_tests --gtest_brief=1
   FUZZ_BUILD_DIR=build-sanitize bash scripts/fuzz.sh 10 "${readers[@]}" "${stages[@]}"

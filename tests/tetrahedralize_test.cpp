@@ -60,6 +60,21 @@ TEST(Tetrahedralize, SphereKeepsItsSurfaceVolume) {
   expect_positive_and_outward(m);
 }
 
+// A cube inside a cube, facing inwards (repair's keep_cavities): the wall of a void, which TetGen
+// leaves empty through the hole point plc_from_surface puts just inside it.
+TEST(Tetrahedralize, AnInwardInnerCubeIsAVoid) {
+  TriangleSoup inner = test::translated(test::cube(1.0), {1, 1, 1});
+  for (Triangle& t : inner.triangles) std::swap(t[1], t[2]);
+  const TriangleSoup hollow = test::merged(test::cube(4.0), inner);
+  const SurfacePlc plc = plc_from_surface(hollow);
+  ASSERT_EQ(plc.holes.size(), 1u);
+  EXPECT_TRUE((plc.holes[0].array() > 1).all() && (plc.holes[0].array() < 2).all()) << plc.holes[0].transpose();
+  const TetMesh m = tetrahedralize_plc(plc, TetParams{});
+  EXPECT_NEAR(analyze_tet_quality(m).volume, 64 - 1, 1e-9 * 63);
+  expect_positive_and_outward(m);
+  EXPECT_TRUE(plc_from_surface(test::cube(4.0)).holes.empty());
+}
+
 TEST(Tetrahedralize, SwitchesFollowTheParameters) {
   TetParams p;
   p.radius_edge = 1.2;

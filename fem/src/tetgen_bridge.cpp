@@ -5,6 +5,7 @@
 #include "meshprep/fem/tetrahedralize.h"
 
 #include "meshprep/core/origin_shift.h"
+#include "meshprep/core/union_find.h"
 
 #include "isolated_call.h"
 
@@ -12,6 +13,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <sstream>
 
 namespace meshprep {
@@ -86,6 +88,12 @@ void fill_tetgenio(const SurfacePlc& plc, tetgenio& in) {
     polygon.vertexlist = new int[plc.facets[f].size()];
     for (std::size_t k = 0; k < plc.facets[f].size(); ++k) polygon.vertexlist[k] = static_cast<int>(plc.facets[f][k]);
     in.facetmarkerlist[f] = plc.tags[f];
+  }
+  in.numberofholes = static_cast<int>(plc.holes.size());
+  if (!plc.holes.empty()) {
+    in.holelist = new REAL[3 * plc.holes.size()];
+    for (std::size_t i = 0; i < plc.holes.size(); ++i)
+      for (int d = 0; d < 3; ++d) in.holelist[3 * i + d] = plc.holes[i][d];
   }
 }
 
@@ -209,6 +217,34 @@ std::string tetgen_switches(const TetParams& params, double enclosed_volume) {
   return sw.str();
 }
 
+namespace {
+
+// A point inside each component that encloses negative volume (a void's wall, facing into it):
+// just off its widest face, on the side the face looks to, a thousandth of the face's inradius
+// away, so no other sheet passes between.
+std::vector<Vec3> void_points(const TriangleSoup& surface) {
+  detail::UnionFind parts(surface.points.size());
+  for (const Triangle& t : surface.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
+  std::map<std::uint32_t, double> volume;
+  std::map<std::uint32_t, std::pair<double, Vec3>> widest;  // inradius, the point off it
+  for (const Triangle& t : surface.triangles) {
+    const Vec3 &a = surface.points[t[0]], &b = surface.points[t[1]], &c = surface.points[t[2]];
+    const std::uint32_t part = parts.find(t[0]);
+    volume[part] += a.dot(b.cross(c)) / 6;
+    const Vec3 n = (b - a).cross(c - a);
+    const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+    const double inradius = perimeter > 0 ? n.norm() / perimeter : 0;
+    auto& best = widest[part];
+    if (inradius > best.first) best = {inradius, (a + b + c) / 3 + n.normalized() * (1e-3 * inradius)};
+  }
+  std::vector<Vec3> holes;
+  for (const auto& [part, v] : volume)
+    if (v < 0 && widest[part].first > 0) holes.push_back(widest[part].second);
+  return holes;
+}
+
+}  // namespace
+
 SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
   constexpr std::uint32_t unused = ~std::uint32_t(0);
   std::vector<std::uint32_t> index(surface.points.size(), unused);
@@ -222,6 +258,7 @@ SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
   }
   for (const Triangle& t : surface.triangles) plc.facets.push_back({index[t[0]], index[t[1]], index[t[2]]});
   plc.tags.assign(plc.facets.size(), tag);
+  plc.holes = void_points(surface);
   return plc;
 }
 
@@ -233,6 +270,7 @@ TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
   if (!shift.isZero()) {
     moved = surface;
     for (Vec3& p : moved.points) p -= shift;
+    for (Vec3& p : moved.holes) p -= shift;
   }
   const SurfacePlc& plc = shift.isZero() ? surface : moved;
   double six_volume = 0;  // enclosed volume for a relative size bound (facets fanned from their first corner)

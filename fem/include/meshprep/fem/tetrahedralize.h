@@ -29,6 +29,8 @@ struct SurfacePlc {
   std::vector<Vec3> points;
   std::vector<std::vector<std::uint32_t>> facets;  ///< each a planar polygon, 3 or more corners
   std::vector<int> tags;                           ///< one per facet, >= 1
+  /// A point inside each void (TetGen's hole list): the region around it gets no tets.
+  std::vector<Vec3> holes;
 };
 
 /// A TetGen failure, with TetGen's code (1 memory, 2 internal, 3 self-intersection, 4 tiny
@@ -58,7 +60,8 @@ std::string tetgen_switches(const TetParams& params, double enclosed_volume);
 
 /// The PLC of a closed triangle surface, every facet tagged `tag`. Points no face uses are left
 /// out (TetGen would make those inside the volume tet vertices and drop the others); the others
-/// keep their order.
+/// keep their order. A closed component enclosing negative volume faces inwards: the wall of a
+/// void (repair's keep_cavities), which gets a hole point just inside it.
 SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag = 1);
 
 }  // namespace meshprep
