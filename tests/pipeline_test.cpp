@@ -188,6 +188,19 @@ TEST_F(Pipeline, WhatNoStageMendsIsRefusedBeforeAnyWork) {
   repaired.repair.enabled = true;
   repaired.repair.params.max_hole = 1.0;
   EXPECT_TRUE(run_pipeline(mesh_file(holed, "holed.off"), repaired).tets);
+  // A dome (the icosphere's upper half) is a sheet by the repair's default, but no height field
+  // over an axis to extrude: wanting tets, the pipeline fills its outline after all, and says so.
+  TriangleSoup dome = test::icosphere(2);
+  dome.triangles.erase(std::remove_if(dome.triangles.begin(), dome.triangles.end(),
+                                      [&](const Triangle& t) {
+                                        return dome.points[t[0]].z() + dome.points[t[1]].z() + dome.points[t[2]].z() < 0;
+                                      }),
+                       dome.triangles.end());
+  PipelineConfig by_default = small_config();
+  by_default.repair.enabled = true;
+  const PipelineResult closed = run_pipeline(mesh_file(dome, "dome.off"), by_default);
+  EXPECT_TRUE(closed.tets);
+  EXPECT_NE(closed.stages.front().note.find("outline filled"), std::string::npos) << closed.stages.front().note;
   // Switched off, the tets no longer need a closable surface.
   PipelineConfig surface_only = small_config();
   surface_only.tetrahedralize.enabled = false;

@@ -15,10 +15,12 @@
 #include "meshprep/quality/coincident_vertices.h"
 #include "meshprep/quality/triangle_metrics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <initializer_list>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -185,6 +187,34 @@ class Run {
     finish(std::move(record));
   }
 
+  // By default the repair leaves an open sheet's outline open (a terrain is no solid's hole), and
+  // the check extrudes such a sheet into a block. A sheet that is no height field over an axis (a
+  // dome, a bowl) cannot be extruded: when tets are wanted and the repair's default left one such
+  // outline open, it is filled after all (the repair again, every loop filled), and said so.
+  // Several sheets (stacked horizons) stay refused: their lids would cut through each other.
+  bool close_sheet(TriangleSoup& soup, RepairResult& r) {
+    if (!config_.tetrahedralize.enabled || config_.repair.params.max_hole) return false;
+    try {
+      extrude_to_block(soup, 1);
+      return false;
+    } catch (const InvalidInput&) {
+    }
+    RepairParams every_loop = config_.repair.params;
+    every_loop.max_hole = std::numeric_limits<double>::infinity();
+    const RepairResult closing = on_input([&] { return repair(soup, every_loop); });
+    r.holes.erase(std::remove_if(r.holes.begin(), r.holes.end(), [](const RepairHole& h) { return !h.filled; }),
+                  r.holes.end());
+    r.holes.insert(r.holes.end(), closing.holes.begin(), closing.holes.end());
+    r.filled_holes += closing.filled_holes;
+    r.open_holes = closing.open_holes;
+    r.intersecting_pairs += closing.intersecting_pairs;
+    r.cut_faces += closing.cut_faces;
+    r.removed_faces += closing.removed_faces;
+    r.separated_pinches += closing.separated_pinches;
+    r.seconds += closing.seconds;
+    return true;
+  }
+
   // The input read as a soup and repaired (repair.h); its row comes before the check's, which
   // takes over `report` (the repaired surface's, measured once for both rows).
   LoadedMesh repaired_input(QualityReport& report) {
@@ -192,7 +222,8 @@ class Run {
     LoadedMesh loaded;
     loaded.soup = read_soup(result_.input, &loaded.read);
     record.faces_before = loaded.soup.triangles.size();
-    const RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
+    RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
+    const bool outline_filled = r.open_holes == 1 && close_sheet(loaded.soup, r);
     loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
     record.seconds = r.seconds;
     report = analyze_quality(loaded.soup, stage_params_);
@@ -207,7 +238,8 @@ class Run {
                   std::to_string(r.flipped_faces) + " flipped, " + std::to_string(r.filled_holes) + " holes filled (" +
                   std::to_string(r.open_holes) + " left open), " + std::to_string(r.intersecting_pairs) +
                   " crossing face pairs cut (" + std::to_string(r.removed_faces) + " pieces inside removed, " +
-                  std::to_string(r.nested_components) + " nested parts dropped)";
+                  std::to_string(r.nested_components) + " nested parts dropped)" +
+                  (outline_filled ? "; an open sheet's outline filled: it is no height field to extrude" : "");
     finish(std::move(record));
     return loaded;
   }

@@ -215,17 +215,34 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   pass.pairs = found.count;
   UnionFind parts(surface.points.size());
   for (const Triangle& t : surface.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
-  std::size_t part_count = 0;
-  for (std::uint32_t v = 0; v < surface.points.size(); ++v) part_count += parts.find(v) == v;
-  if (found.pairs.empty() && part_count <= 1) return pass;
+  // Only closed parts have an inside: an open one (a sheet, a hole left open) has a fractional
+  // winding number around it, so it is neither cut nor judged, and does not judge the others.
+  std::vector<char> open(surface.points.size(), 0);
+  const std::vector<FaceEdge> edges = sorted_face_edges(surface);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+    if (j - i == 1) open[parts.find(edges[i].lo())] = 1;
+    i = j;
+  }
+  const auto closed_face = [&](std::size_t f) { return !open[parts.find(surface.triangles[f][0])]; };
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const auto& pair : found.pairs)
+    if (closed_face(pair.first) && closed_face(pair.second)) pairs.push_back(pair);
+  std::size_t closed_parts = 0;
+  for (std::uint32_t v = 0; v < surface.points.size(); ++v) closed_parts += parts.find(v) == v && !open[v];
+  if (pairs.empty() && closed_parts <= 1) return pass;
+  TriangleSoup closed_surface{surface.points, {}};
+  for (std::size_t f = 0; f < surface.triangles.size(); ++f)
+    if (closed_face(f)) closed_surface.triangles.push_back(surface.triangles[f]);
 
-  CutSurface cut = cut_along_intersections(surface, found.pairs);
+  CutSurface cut = cut_along_intersections(surface, pairs);
   pass.cut_faces = cut.cut_faces;
   const std::vector<std::uint32_t> patch = patches(cut.soup);
   // Each patch is judged at the point just outside its widest face that is not a doubled copy.
   std::map<std::uint32_t, std::pair<std::size_t, double>> widest;
   for (std::size_t f = 0; f < cut.soup.triangles.size(); ++f) {
-    if (cut.doubled[f]) continue;
+    if (cut.doubled[f] || !closed_face(cut.source[f])) continue;
     const double inradius = just_outside(cut.soup, f).second;
     auto [it, added] = widest.emplace(patch[f], std::make_pair(f, inradius));
     if (!added && inradius > it->second.second) it->second = {f, inradius};
@@ -235,7 +252,7 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   for (const auto& [p, face] : widest) judged[k++] = {p, face.first};
   std::vector<long> winding(judged.size());
   tbb::parallel_for(std::size_t{0}, judged.size(), [&](std::size_t i) {
-    winding[i] = std::lround(winding_number(surface, just_outside(cut.soup, judged[i].second).first));
+    winding[i] = std::lround(winding_number(closed_surface, just_outside(cut.soup, judged[i].second).first));
   });
   std::map<std::uint32_t, long> outside;
   for (std::size_t i = 0; i < judged.size(); ++i) outside[judged[i].first] = winding[i];
@@ -255,7 +272,7 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
     const long winding_outside = w == outside.end() ? 1 : w->second;
     Triangle t = cut.soup.triangles[f];
     const std::uint32_t part = parts.find(surface.triangles[cut.source[f]][0]);
-    if (!cut.doubled[f] && winding_outside == 0) {
+    if (open[part] || (!cut.doubled[f] && winding_outside == 0)) {
       kept.triangles.push_back(t);
       continue;
     }

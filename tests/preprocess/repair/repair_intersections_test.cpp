@@ -149,6 +149,19 @@ TEST(RepairIntersections, ABoxInsideABoxIsDroppedOrKeptAsACavity) {
   EXPECT_NEAR(signed_volume(kept), 63, 1e-12);  // the inner box faces inwards: a void
 }
 
+// Open parts have no inside: two sheets, one above the other, are neither cut nor judged (a
+// winding number around a sheet is fractional, and rounding it dropped one of stacked horizons).
+TEST(RepairIntersections, OpenSheetsAreNeitherCutNorJudged) {
+  TriangleSoup soup = test::merged(test::grid(6), test::grid(6, 1.0));
+  const std::size_t faces = soup.triangles.size();
+  RepairParams params;
+  params.max_hole = 0.0;  // both outlines stay open
+  const RepairResult r = repair(soup, params);
+  EXPECT_EQ(r.removed_faces, 0u);
+  EXPECT_EQ(r.nested_components, 0u);
+  EXPECT_EQ(soup.triangles.size(), faces);
+}
+
 // The corpus's self-intersecting scans, and its open elephant that crosses itself.
 TEST(RepairIntersections, TheCorpusScansBecomeValidSolidsOnTheirInput) {
   const std::filesystem::path shared(MESHPREP_SHARED_DATA_DIR);
