@@ -15,7 +15,7 @@ struct CutSegment {
 /// The cuts the closed triangles a and b make in each other.
 struct FaceIntersection {
   std::vector<CutSegment> in_a, in_b;
-  bool coplanar = false;
+  bool coplanar = false;  ///< the faces share their plane (each was cut along the other's edges)
 };
 
 /// Faces in different planes meet along one segment (or at one point) of the line their planes

@@ -26,8 +26,9 @@ namespace {
 
 // A double holds a coordinate to 1.1e-16 of the largest one (the reach). Where a face passes
 // within a rounding of another's edge or corner, the exact cut makes pieces thinner than that, and
-// rounding their corners can fold them: the cut's points within 1e-10 of the reach of each other
-// are welded (far below any feature a mesh for analysis holds, far above the rounding).
+// rounding their corners can fold them: after a pass that changed the surface, its points within
+// 1e-10 of the reach of each other are welded (far below any feature a mesh for analysis holds,
+// far above the rounding).
 constexpr double kWeldReach = 1e-10;
 
 double reach(const TriangleSoup& soup) {
@@ -215,6 +216,9 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   pass.pairs = found.count;
   UnionFind parts(surface.points.size());
   for (const Triangle& t : surface.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
+  std::size_t part_count = 0;
+  for (std::uint32_t v = 0; v < surface.points.size(); ++v) part_count += parts.find(v) == v;
+  if (found.pairs.empty() && part_count <= 1) return pass;  // the clean surface: nothing to judge
   // Only closed parts have an inside: an open one (a sheet, a hole left open) has a fractional
   // winding number around it, so it is neither cut nor judged, and does not judge the others.
   std::vector<char> open(surface.points.size(), 0);
@@ -302,7 +306,6 @@ SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool kee
       counts.found_none = pass.pairs == 0;
       break;
     }
-    ++counts.rounds;
     counts.cut_faces += pass.cut_faces;
     counts.removed_faces += pass.removed_faces;
     counts.nested_components += pass.nested_components;

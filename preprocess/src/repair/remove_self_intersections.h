@@ -16,7 +16,6 @@ struct SelfIntersectionCounts {
   std::size_t cavities = 0;            ///< such parts kept as the walls of voids (keep_cavities)
   std::size_t separated_pinches = 0;   ///< vertex copies moved apart (separate_pinches.h)
   bool found_none = false;  ///< the last search was on the surface as returned and found no pair
-  std::size_t rounds = 0;              ///< passes made; a pass after the first mends its rounding
 };
 
 /// Cuts every face along the curves where other faces meet it (exactly: exact_geometry.h), then
