@@ -2,6 +2,7 @@
 
 #include "meshprep/quality/face_edges.h"
 
+#include <array>
 #include <cstdint>
 #include <queue>
 #include <utility>
@@ -28,20 +29,28 @@ OrientCounts orient_components(TriangleSoup& soup) {
   OrientCounts counts;
   const std::vector<FaceEdge> uses = sorted_face_edges(soup);
   // For each face, its manifold edges' other face and whether the two ran the edge the same way
-  // in the input; border and non-manifold edges join nothing (and keep a component open).
+  // in the input (at most three, in place: no allocation per face); border and non-manifold edges
+  // join nothing (and keep a component open).
   struct Link {
-    std::uint32_t other;
-    bool same_direction;
+    std::uint32_t other = UINT32_MAX;
+    bool same_direction = false;
   };
-  std::vector<std::vector<Link>> links(soup.triangles.size());
+  std::vector<std::array<Link, 3>> links(soup.triangles.size());
+  const auto link = [&links](std::uint32_t face, Link l) {
+    for (Link& slot : links[face])
+      if (slot.other == UINT32_MAX) {
+        slot = l;
+        return;
+      }
+  };
   std::vector<char> open(soup.triangles.size(), 0);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].key == uses[i].key) ++j;
     if (j - i == 2) {
       const bool same = uses[i].forward == uses[i + 1].forward;
-      links[uses[i].face].push_back({uses[i + 1].face, same});
-      links[uses[i + 1].face].push_back({uses[i].face, same});
+      link(uses[i].face, {uses[i + 1].face, same});
+      link(uses[i + 1].face, {uses[i].face, same});
     } else {
       for (std::size_t k = i; k < j; ++k) open[uses[k].face] = 1;
     }
@@ -60,13 +69,13 @@ OrientCounts orient_components(TriangleSoup& soup) {
       const std::uint32_t f = queue.front();
       queue.pop();
       closed = closed && !open[f];
-      for (const Link& link : links[f]) {
-        if (reached[link.other]) continue;
-        reached[link.other] = 1;
+      for (const Link& l : links[f]) {
+        if (l.other == UINT32_MAX || reached[l.other]) continue;
+        reached[l.other] = 1;
         // Agreeing faces run a shared edge in opposite directions.
-        flipped[link.other] = static_cast<char>(flipped[f] ^ link.same_direction);
-        component.push_back(link.other);
-        queue.push(link.other);
+        flipped[l.other] = static_cast<char>(flipped[f] ^ l.same_direction);
+        component.push_back(l.other);
+        queue.push(l.other);
       }
     }
     for (const std::uint32_t f : component)
