@@ -24,10 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::size_t at = 2;
   if (size < at + 3 * point_count) return 0;
   TriangleSoup soup;
-  for (std::size_t i = 0; i < point_count; ++i, at += 3)
-    soup.points.push_back({(data[at] % 16) / ((data[at] & 16) ? 2.0 : 1.0), (data[at + 1] % 16) / 1.0,
-                           (data[at + 2] % 16) / ((data[at + 2] & 16) ? 2.0 : 1.0)});
-  soup.triangles = fuzz::faces_from_bytes(data, size, at, point_count, /*max_faces=*/32);
+  soup.points = fuzz::grid_points_from_bytes(data, at, point_count);
+  soup.triangles = fuzz::faces_from_bytes(data, size, at + 3 * point_count, point_count, /*max_faces=*/32);
   fuzz::refuse_only_with_meshprep_errors([&] {
     const RepairResult result = repair(soup, params);
     for (const Vec3& p : soup.points) fuzz::require(p.allFinite(), "every point is finite");

@@ -27,6 +27,17 @@ inline void require(bool holds, const char* invariant) {
   std::abort();
 }
 
+/// The geometric targets' points: three bytes each from `at` on, coordinates 0 to 15 on a grid, x
+/// and z halved when their byte's bit 16 is set (flat, folded and coincident places are common).
+/// \pre the bytes hold `point_count` points from `at`
+inline std::vector<Vec3> grid_points_from_bytes(const std::uint8_t* data, std::size_t at, std::size_t point_count) {
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < point_count; ++i, at += 3)
+    points.push_back({(data[at] % 16) / ((data[at] & 16) ? 2.0 : 1.0), (data[at + 1] % 16) / 1.0,
+                      (data[at + 2] % 16) / ((data[at + 2] & 16) ? 2.0 : 1.0)});
+  return points;
+}
+
 /// The geometric targets' faces: three bytes each from `at` on (corner indices modulo
 /// `point_count`), as many as the bytes hold, at most `max_faces`.
 inline std::vector<Triangle> faces_from_bytes(const std::uint8_t* data, std::size_t size, std::size_t at,

@@ -6,6 +6,7 @@
 
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/core/union_find.h"
+#include "meshprep/quality/triangle_metrics.h"
 
 #include "isolated_call.h"
 
@@ -220,26 +221,22 @@ std::string tetgen_switches(const TetParams& params, double enclosed_volume) {
 namespace {
 
 // A point inside each component that encloses negative volume (a void's wall, facing into it):
-// just off its widest face, on the side the face looks to, a thousandth of the face's inradius
-// away, so no other sheet passes between.
+// just off its widest face, on the side the face looks to (point_off_face).
 std::vector<Vec3> void_points(const TriangleSoup& surface) {
   detail::UnionFind parts(surface.points.size());
   for (const Triangle& t : surface.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
   std::map<std::uint32_t, double> volume;
-  std::map<std::uint32_t, std::pair<double, Vec3>> widest;  // inradius, the point off it
+  std::map<std::uint32_t, PointOffFace> widest;
   for (const Triangle& t : surface.triangles) {
     const Vec3 &a = surface.points[t[0]], &b = surface.points[t[1]], &c = surface.points[t[2]];
     const std::uint32_t part = parts.find(t[0]);
     volume[part] += a.dot(b.cross(c)) / 6;
-    const Vec3 n = (b - a).cross(c - a);
-    const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
-    const double inradius = perimeter > 0 ? n.norm() / perimeter : 0;
-    auto& best = widest[part];
-    if (inradius > best.first) best = {inradius, (a + b + c) / 3 + n.normalized() * (1e-3 * inradius)};
+    const PointOffFace off = point_off_face(a, b, c);
+    if (off.inradius > widest[part].inradius) widest[part] = off;
   }
   std::vector<Vec3> holes;
   for (const auto& [part, v] : volume)
-    if (v < 0 && widest[part].first > 0) holes.push_back(widest[part].second);
+    if (v < 0 && widest[part].inradius > 0) holes.push_back(widest[part].point);
   return holes;
 }
 

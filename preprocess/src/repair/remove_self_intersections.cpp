@@ -1,5 +1,7 @@
 #include "repair/remove_self_intersections.h"
 
+#include "repair/same_place.h"
+
 #include "repair/cut_face.h"
 #include "repair/face_intersection.h"
 #include "repair/separate_pinches.h"
@@ -10,14 +12,13 @@
 #include "meshprep/core/union_find.h"
 #include "meshprep/quality/face_edges.h"
 #include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/triangle_metrics.h"
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -169,13 +170,7 @@ CutSurface cut_along_intersections(const TriangleSoup& surface,
 // (where four or more meet), each wholly inside or outside the others. Copies of one point (where
 // split_nonmanifold parted sheets) count as one, or a curve through them would not close.
 std::vector<std::uint32_t> patches(const TriangleSoup& soup) {
-  std::vector<std::uint32_t> order(soup.points.size());
-  std::iota(order.begin(), order.end(), 0u);
-  const auto position = [&soup](std::uint32_t v) { return std::tie(soup.points[v].x(), soup.points[v].y(), soup.points[v].z()); };
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return position(a) < position(b); });
-  std::vector<std::uint32_t> canonical(soup.points.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    canonical[order[i]] = i > 0 && soup.points[order[i]] == soup.points[order[i - 1]] ? canonical[order[i - 1]] : order[i];
+  const std::vector<std::uint32_t> canonical = first_at_same_place(soup.points);
   TriangleSoup merged{{}, soup.triangles};
   merged.points.resize(soup.points.size());
   for (Triangle& t : merged.triangles)
@@ -193,17 +188,9 @@ std::vector<std::uint32_t> patches(const TriangleSoup& soup) {
   return patch;
 }
 
-// A point just off face f on the side its normal points to, and the face's inradius (0 if none).
-std::pair<Vec3, double> just_outside(const TriangleSoup& soup, std::size_t f) {
+PointOffFace just_outside(const TriangleSoup& soup, std::size_t f) {
   const Triangle& t = soup.triangles[f];
-  const Vec3 &a = soup.points[t[0]], &b = soup.points[t[1]], &c = soup.points[t[2]];
-  const Vec3 n = (b - a).cross(c - a);
-  const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
-  const double inradius = perimeter > 0 ? n.norm() / perimeter : 0;
-  if (!(inradius > 0)) return {a, 0};
-  // A thousandth of the inradius: far enough for the solid angles to be accurate to ~1e-13, near
-  // enough that no other sheet of the surface passes between the face and the point.
-  return {(a + b + c) / 3 + n.normalized() * (1e-3 * inradius), inradius};
+  return point_off_face(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
 }
 
 struct Pass {
@@ -247,7 +234,7 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   std::map<std::uint32_t, std::pair<std::size_t, double>> widest;
   for (std::size_t f = 0; f < cut.soup.triangles.size(); ++f) {
     if (cut.doubled[f] || !closed_face(cut.source[f])) continue;
-    const double inradius = just_outside(cut.soup, f).second;
+    const double inradius = just_outside(cut.soup, f).inradius;
     auto [it, added] = widest.emplace(patch[f], std::make_pair(f, inradius));
     if (!added && inradius > it->second.second) it->second = {f, inradius};
   }
@@ -256,7 +243,7 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   for (const auto& [p, face] : widest) judged[k++] = {p, face.first};
   std::vector<long> winding(judged.size());
   tbb::parallel_for(std::size_t{0}, judged.size(), [&](std::size_t i) {
-    winding[i] = std::lround(winding_number(closed_surface, just_outside(cut.soup, judged[i].second).first));
+    winding[i] = std::lround(winding_number(closed_surface, just_outside(cut.soup, judged[i].second).point));
   });
   std::map<std::uint32_t, long> outside;
   for (std::size_t i = 0; i < judged.size(); ++i) outside[judged[i].first] = winding[i];

@@ -1,10 +1,10 @@
 #include "repair/separate_pinches.h"
 
+#include "repair/same_place.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
-#include <tuple>
 #include <vector>
 
 namespace meshprep::detail {
@@ -26,21 +26,13 @@ std::size_t separate_pinches(TriangleSoup& surface) {
       shortest[t[(i + 1) % 3]] = std::min(shortest[t[(i + 1) % 3]], edge);
     }
   }
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t v = 0; v < n; ++v)
-    if (used[v]) order.push_back(v);
-  const auto position = [&](std::uint32_t v) {
-    const Vec3& p = surface.points[v];
-    return std::tie(p.x(), p.y(), p.z());
-  };
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return position(a) < position(b); });
+  // A used vertex is a copy if another used vertex sits at its place.
+  const std::vector<std::uint32_t> first = first_at_same_place(surface.points);
+  std::vector<std::uint32_t> used_here(n, 0);
+  for (std::uint32_t v = 0; v < n; ++v) used_here[first[v]] += used[v];
   std::vector<std::uint32_t> copies;
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i + 1;
-    while (j < order.size() && surface.points[order[j]] == surface.points[order[i]]) ++j;
-    if (j - i > 1) copies.insert(copies.end(), order.begin() + i, order.begin() + j);
-    i = j;
-  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (used[v] && used_here[first[v]] > 1) copies.push_back(v);
   std::size_t moved = 0;
   for (const std::uint32_t v : copies) {
     const double length = normal_sum[v].norm();

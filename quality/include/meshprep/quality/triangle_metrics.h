@@ -44,6 +44,24 @@ inline double radius_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
   return radius_ratio_of((b - a).norm(), (c - b).norm(), (a - c).norm(), area);
 }
 
+/// A point just off a triangle, on the side its normal (a, b, c counter-clockwise) points to, and
+/// the triangle's inradius r = 2A / (a + b + c).
+struct PointOffFace {
+  Vec3 point;
+  double inradius = 0;  ///< 0 for a degenerate triangle (point is then a)
+};
+
+/// The centroid moved r / 1000 along the unit normal: far enough that which side of the surface
+/// it is on is certain (a solid angle from it is accurate to ~1e-13; TetGen locates it), near
+/// enough that no other sheet of a valid surface passes between the face and it.
+inline PointOffFace point_off_face(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+  const double inradius = perimeter > 0 ? n.norm() / perimeter : 0;
+  if (!(inradius > 0)) return {a, 0};
+  return {(a + b + c) / 3 + n.normalized() * (1e-3 * inradius), inradius};
+}
+
 /// Signed volume enclosed by the surface's faces, sum of (p0 - o) . ((p1 - o) x (p2 - o)) / 6 with o a
 /// corner of the first face (divergence theorem; o near the surface keeps the figure exact far
 /// from the origin); meaningful for a closed, consistently oriented surface (positive for outward normals).
