@@ -21,6 +21,12 @@
 
 namespace meshprep::improve {
 
+/// The least rise of a worst sine that counts as a gain: 1e-3, about 0.06 degrees near 15. A
+/// smoothing step must gain this much (smaller gains only feed the queue with the same tets again;
+/// Stellar's MINSMOOTHIMPROVEMENT plays the same role), and so must a pass's worst tet when the
+/// count below the goal does not fall (improve_tets.cpp).
+inline constexpr double kMinSineGain = 1e-3;
+
 /// Biased minimum sine of the dihedral angles of the tet (p0, p1, p2, p3): in (0, 1] for a
 /// positively oriented tet ((p1 - p0) . ((p2 - p0) x (p3 - p0)) > 0), <= 0 for a flat or inverted
 /// one. `obtuse_weight` in (0, 1] multiplies the sines of obtuse angles.

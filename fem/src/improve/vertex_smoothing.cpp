@@ -1,5 +1,6 @@
 #include "vertex_smoothing.h"
 
+#include "tet_objective.h"
 #include "worst_tet_maximiser.h"
 
 #include <algorithm>
@@ -11,9 +12,6 @@ namespace {
 
 // A step never goes further than this share of the shortest edge at the vertex.
 constexpr double kMaxStepOfShortestEdge = 0.5;
-// A move must raise the worst sine by this much (0.006 degrees near 15): smaller gains only
-// feed the queue with the same tets again (Stellar's MINSMOOTHIMPROVEMENT plays the same role).
-constexpr double kMinGain = 1e-3;
 
 // The tet t with corner `slot` free, as (fixed..., free) of the same orientation: each order
 // below is an even permutation of t's corners.
@@ -46,7 +44,7 @@ bool smooth_vertex(TetComplex& mesh, VertexId v) {
   const double weight = mesh.obtuse_weight();
   const double initial = worst_quality(tets, start, weight);
   const MaximisedPosition best = maximise_worst_tet(tets, start, kMaxStepOfShortestEdge * std::sqrt(shortest), weight);
-  if (!(best.worst > initial + kMinGain) || !all_positive(tets, best.position)) return false;
+  if (!(best.worst > initial + kMinSineGain) || !all_positive(tets, best.position)) return false;
   mesh.move_point(v, best.position, star);
   return true;
 }

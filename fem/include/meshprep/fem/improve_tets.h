@@ -14,8 +14,10 @@
 /// A move is kept only if it raises the worst quality among the tets it replaces, and only if
 /// every tet it makes is positive by an exact orientation test: no tet is ever inverted, and the
 /// sorted list of qualities rises at every move, so nothing cycles. A pass ends when no tet
-/// below the goal is left to try; the run stops when the goal is reached, when a pass gains
-/// nothing (neither the worst tet nor the number below the goal), or at a pass or time limit.
+/// below the goal is left to try (or after a budget of tries bounded by the tets below the goal at
+/// the start); the run stops when the goal is reached, when a pass gains nothing (the number below
+/// the goal did not fall and the worst tet rose by less than a smoothing step's least gain), or at
+/// a pass or time limit.
 ///
 /// The objective is the biased minimum sine of the dihedral angles (fem/src/improve/
 /// tet_objective.h): the sine is zero exactly at 0 and 180 degrees, and the obtuse angles are
