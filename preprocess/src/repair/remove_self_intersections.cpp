@@ -197,7 +197,9 @@ struct Pass {
   std::size_t pairs = 0, cut_faces = 0, removed_faces = 0, nested_components = 0, cavities = 0;
 };
 
-Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
+// `uses`: sorted_face_edges(surface), or null to sort them here, once past the return for a
+// surface with nothing to judge.
+Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool keep_cavities) {
   Pass pass;
   const SelfIntersections found = find_self_intersections(surface);
   pass.pairs = found.count;
@@ -209,7 +211,8 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   // Only closed parts have an inside: an open one (a sheet, a hole left open) has a fractional
   // winding number around it, so it is neither cut nor judged, and does not judge the others.
   std::vector<char> open(surface.points.size(), 0);
-  const std::vector<FaceEdge> edges = sorted_face_edges(surface);
+  const std::vector<FaceEdge> sorted_here = uses ? std::vector<FaceEdge>{} : sorted_face_edges(surface);
+  const std::vector<FaceEdge>& edges = uses ? *uses : sorted_here;
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
     while (j < edges.size() && edges[j].key == edges[i].key) ++j;
@@ -284,10 +287,12 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
 
 }  // namespace
 
-SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool keep_cavities) {
+SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const std::vector<FaceEdge>& uses,
+                                                 bool keep_cavities) {
   SelfIntersectionCounts counts;
   for (int round = 0; round < 3; ++round) {
-    const Pass pass = one_pass(surface, keep_cavities);
+    // Every pass after the first looks at a surface the one before changed.
+    const Pass pass = one_pass(surface, round == 0 ? &uses : nullptr, keep_cavities);
     if (round == 0) counts.intersecting_pairs = pass.pairs;
     if (pass.cut_faces == 0 && pass.removed_faces == 0 && pass.cavities == 0) {
       counts.found_none = pass.pairs == 0;
@@ -298,7 +303,7 @@ SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool kee
     counts.nested_components += pass.nested_components;
     counts.cavities += pass.cavities;
     weld_vertices(surface, kWeldReach * reach(surface));
-    split_nonmanifold(surface);
+    split_nonmanifold(surface, sorted_face_edges(surface));
     counts.separated_pinches += separate_pinches(surface);
   }
   return counts;
