@@ -169,6 +169,7 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
 
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
   std::vector<Vec3> points;
+  points.reserve(soup.points.size());  // all of them, on a clean surface
   for (Triangle& t : faces)
     for (std::uint32_t& v : t) {
       if (renumber[v] == UINT32_MAX) {
