@@ -169,14 +169,23 @@ CutSurface cut_along_intersections(const TriangleSoup& surface,
 // Faces joined across edges that exactly two faces share: the pieces between the cut curves
 // (where four or more meet), each wholly inside or outside the others. Copies of one point (where
 // split_nonmanifold parted sheets) count as one, or a curve through them would not close.
-std::vector<std::uint32_t> patches(const TriangleSoup& soup) {
+// `uses`: sorted_face_edges(soup), or null; where no point has copies they are the merged
+// surface's too.
+std::vector<std::uint32_t> patches(const TriangleSoup& soup, const std::vector<FaceEdge>* uses) {
   const std::vector<std::uint32_t> canonical = first_at_same_place(soup.points);
-  TriangleSoup merged{{}, soup.triangles};
-  merged.points.resize(soup.points.size());
-  for (Triangle& t : merged.triangles)
-    for (std::uint32_t& v : t) v = canonical[v];
+  bool has_copies = false;
+  for (std::uint32_t v = 0; v < canonical.size(); ++v) has_copies = has_copies || canonical[v] != v;
+  std::vector<FaceEdge> merged_uses;
+  if (has_copies || !uses) {
+    TriangleSoup merged{{}, soup.triangles};
+    merged.points.resize(soup.points.size());
+    for (Triangle& t : merged.triangles)
+      for (std::uint32_t& v : t) v = canonical[v];
+    merged_uses = sorted_face_edges(merged);
+    uses = &merged_uses;
+  }
+  const std::vector<FaceEdge>& edges = *uses;
   UnionFind sets(soup.triangles.size());
-  const std::vector<FaceEdge> edges = sorted_face_edges(merged);
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
     while (j < edges.size() && edges[j].key == edges[i].key) ++j;
@@ -232,7 +241,8 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
 
   CutSurface cut = cut_along_intersections(surface, pairs);
   pass.cut_faces = cut.cut_faces;
-  const std::vector<std::uint32_t> patch = patches(cut.soup);
+  // Nothing cut (no pairs met: parts apart), the cut surface is the surface, its edges sorted.
+  const std::vector<std::uint32_t> patch = patches(cut.soup, cut.cut_faces == 0 ? &edges : nullptr);
   // Each patch is judged at the point just outside its widest face that is not a doubled copy.
   std::map<std::uint32_t, std::pair<std::size_t, double>> widest;
   for (std::size_t f = 0; f < cut.soup.triangles.size(); ++f) {
