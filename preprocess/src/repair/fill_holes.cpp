@@ -72,8 +72,8 @@ std::string two_digits(double value) {
 
 }  // namespace
 
-std::vector<RepairHole> fill_holes(TriangleSoup& soup, std::optional<double> max_hole) {
-  const std::vector<FaceEdge> uses = sorted_face_edges(soup);
+std::vector<RepairHole> fill_holes(TriangleSoup& soup, const std::vector<FaceEdge>& uses,
+                                   std::optional<double> max_hole) {
   std::unordered_map<std::uint32_t, Border> border;  // by its first vertex, as its face runs it
   std::vector<std::uint32_t> starts;
   for (std::size_t i = 0; i < uses.size(); ++i) {
@@ -82,7 +82,7 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, std::optional<double> max
     const std::uint32_t from = e.forward ? e.lo() : e.hi(), to = e.forward ? e.hi() : e.lo();
     if (border.emplace(from, Border{to, e.face}).second) starts.push_back(from);
   }
-  if (border.empty()) return {};  // closed: the common case costs one sort
+  if (border.empty()) return {};  // closed: the common case costs one walk over the edges
   // Copies of one point on the border are split_nonmanifold's, of a bow-tie on a rim: each answers
   // to the lowest, and a loop that reaches one copy leaves from another's border edge, across the
   // empty sector between their fans, so that the patches fill the sectors and the copies make one

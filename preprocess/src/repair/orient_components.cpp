@@ -1,7 +1,5 @@
 #include "repair/orient_components.h"
 
-#include "meshprep/quality/face_edges.h"
-
 #include <array>
 #include <cstdint>
 #include <queue>
@@ -25,9 +23,8 @@ double six_volume(const TriangleSoup& soup, const std::vector<std::uint32_t>& fa
 
 }  // namespace
 
-OrientCounts orient_components(TriangleSoup& soup) {
+OrientCounts orient_components(TriangleSoup& soup, const std::vector<FaceEdge>& uses) {
   OrientCounts counts;
-  const std::vector<FaceEdge> uses = sorted_face_edges(soup);
   // For each face, its manifold edges' other face and whether the two ran the edge the same way
   // in the input (at most three, in place: no allocation per face); border and non-manifold edges
   // join nothing (and keep a component open).

@@ -169,14 +169,23 @@ CutSurface cut_along_intersections(const TriangleSoup& surface,
 // Faces joined across edges that exactly two faces share: the pieces between the cut curves
 // (where four or more meet), each wholly inside or outside the others. Copies of one point (where
 // split_nonmanifold parted sheets) count as one, or a curve through them would not close.
-std::vector<std::uint32_t> patches(const TriangleSoup& soup) {
+// `uses`: sorted_face_edges(soup), or null; where no point has copies they are the merged
+// surface's too.
+std::vector<std::uint32_t> patches(const TriangleSoup& soup, const std::vector<FaceEdge>* uses) {
   const std::vector<std::uint32_t> canonical = first_at_same_place(soup.points);
-  TriangleSoup merged{{}, soup.triangles};
-  merged.points.resize(soup.points.size());
-  for (Triangle& t : merged.triangles)
-    for (std::uint32_t& v : t) v = canonical[v];
+  bool has_copies = false;
+  for (std::uint32_t v = 0; v < canonical.size(); ++v) has_copies = has_copies || canonical[v] != v;
+  std::vector<FaceEdge> merged_uses;
+  if (has_copies || !uses) {
+    TriangleSoup merged{{}, soup.triangles};
+    merged.points.resize(soup.points.size());
+    for (Triangle& t : merged.triangles)
+      for (std::uint32_t& v : t) v = canonical[v];
+    merged_uses = sorted_face_edges(merged);
+    uses = &merged_uses;
+  }
+  const std::vector<FaceEdge>& edges = *uses;
   UnionFind sets(soup.triangles.size());
-  const std::vector<FaceEdge> edges = sorted_face_edges(merged);
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
     while (j < edges.size() && edges[j].key == edges[i].key) ++j;
@@ -197,7 +206,9 @@ struct Pass {
   std::size_t pairs = 0, cut_faces = 0, removed_faces = 0, nested_components = 0, cavities = 0;
 };
 
-Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
+// `uses`: sorted_face_edges(surface), or null to sort them here, once past the return for a
+// surface with nothing to judge.
+Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool keep_cavities) {
   Pass pass;
   const SelfIntersections found = find_self_intersections(surface);
   pass.pairs = found.count;
@@ -209,7 +220,8 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
   // Only closed parts have an inside: an open one (a sheet, a hole left open) has a fractional
   // winding number around it, so it is neither cut nor judged, and does not judge the others.
   std::vector<char> open(surface.points.size(), 0);
-  const std::vector<FaceEdge> edges = sorted_face_edges(surface);
+  const std::vector<FaceEdge> sorted_here = uses ? std::vector<FaceEdge>{} : sorted_face_edges(surface);
+  const std::vector<FaceEdge>& edges = uses ? *uses : sorted_here;
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
     while (j < edges.size() && edges[j].key == edges[i].key) ++j;
@@ -229,7 +241,8 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
 
   CutSurface cut = cut_along_intersections(surface, pairs);
   pass.cut_faces = cut.cut_faces;
-  const std::vector<std::uint32_t> patch = patches(cut.soup);
+  // Nothing cut (no pairs met: parts apart), the cut surface is the surface, its edges sorted.
+  const std::vector<std::uint32_t> patch = patches(cut.soup, cut.cut_faces == 0 ? &edges : nullptr);
   // Each patch is judged at the point just outside its widest face that is not a doubled copy.
   std::map<std::uint32_t, std::pair<std::size_t, double>> widest;
   for (std::size_t f = 0; f < cut.soup.triangles.size(); ++f) {
@@ -284,10 +297,12 @@ Pass one_pass(TriangleSoup& surface, bool keep_cavities) {
 
 }  // namespace
 
-SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool keep_cavities) {
+SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const std::vector<FaceEdge>& uses,
+                                                 bool keep_cavities) {
   SelfIntersectionCounts counts;
   for (int round = 0; round < 3; ++round) {
-    const Pass pass = one_pass(surface, keep_cavities);
+    // Every pass after the first looks at a surface the one before changed.
+    const Pass pass = one_pass(surface, round == 0 ? &uses : nullptr, keep_cavities);
     if (round == 0) counts.intersecting_pairs = pass.pairs;
     if (pass.cut_faces == 0 && pass.removed_faces == 0 && pass.cavities == 0) {
       counts.found_none = pass.pairs == 0;
@@ -298,7 +313,7 @@ SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool kee
     counts.nested_components += pass.nested_components;
     counts.cavities += pass.cavities;
     weld_vertices(surface, kWeldReach * reach(surface));
-    split_nonmanifold(surface);
+    split_nonmanifold(surface, sorted_face_edges(surface));
     counts.separated_pinches += separate_pinches(surface);
   }
   return counts;

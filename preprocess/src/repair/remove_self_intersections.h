@@ -3,8 +3,10 @@
 // parts, turned into the boundary of the solid they enclose together.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/quality/face_edges.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace meshprep::detail {
 
@@ -27,8 +29,10 @@ struct SelfIntersectionCounts {
 /// (and a part inside that void facing outwards again).
 /// Where the union's parts touch at a point or along an edge, they are held apart by a hair
 /// (separate_pinches.h). The output's new points are the exact ones rounded to doubles; if that rounding makes faces
-/// cross again, the pass runs again on the result (at most three passes).
+/// cross again, the pass runs again on the result (at most three passes). `uses` is
+/// sorted_face_edges(surface), for the first pass.
 /// \pre consistently oriented, closed components outward (orient_components)
-SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, bool keep_cavities);
+SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const std::vector<FaceEdge>& uses,
+                                                 bool keep_cavities);
 
 }  // namespace meshprep::detail

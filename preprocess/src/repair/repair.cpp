@@ -9,9 +9,11 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/repair/repair_parameters.h"
+#include "meshprep/quality/face_edges.h"
 
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 namespace meshprep {
 
@@ -27,24 +29,31 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.degenerate_faces = weld.degenerate_faces;
   result.duplicate_faces = weld.duplicate_faces;
   result.unused_vertices = weld.unused_vertices;
-  detail::SplitCounts split = detail::split_nonmanifold(surface);
+  // The steps below walk the same sorted face edges: sorted once, and again only after a step
+  // that changed the faces.
+  std::vector<FaceEdge> uses = sorted_face_edges(surface);
+  detail::SplitCounts split = detail::split_nonmanifold(surface, uses);
   result.split_edges = split.split_edges;
   result.split_vertices = split.split_vertices;
-  const detail::OrientCounts orient = detail::orient_components(surface);
+  if (split.split_vertices > 0) uses = sorted_face_edges(surface);
+  const detail::OrientCounts orient = detail::orient_components(surface, uses);
   result.components = orient.components;
   result.flipped_faces = orient.flipped_faces;
   result.inverted_components = orient.inverted_components;
-  result.holes = detail::fill_holes(surface, params.max_hole);
+  if (orient.flipped_faces > 0 || orient.inverted_components > 0) uses = sorted_face_edges(surface);
+  result.holes = detail::fill_holes(surface, uses, params.max_hole);
   for (const RepairHole& hole : result.holes) ++(hole.filled ? result.filled_holes : result.open_holes);
   // A bow-tie on a hole's rim is one fan again once the patch joins its fans (fill_holes.cpp):
   // its copies are welded back, and what is still not manifold is split again.
   if (result.split_vertices > 0 && result.filled_holes > 0) {
     detail::weld_vertices(surface, 0);
-    split = detail::split_nonmanifold(surface);
+    split = detail::split_nonmanifold(surface, sorted_face_edges(surface));
     result.split_edges = split.split_edges;
     result.split_vertices = split.split_vertices;
   }
-  const detail::SelfIntersectionCounts crossing = detail::remove_self_intersections(surface, params.keep_cavities);
+  if (result.filled_holes > 0) uses = sorted_face_edges(surface);
+  const detail::SelfIntersectionCounts crossing =
+      detail::remove_self_intersections(surface, uses, params.keep_cavities);
   result.intersecting_pairs = crossing.intersecting_pairs;
   result.cut_faces = crossing.cut_faces;
   result.removed_faces = crossing.removed_faces;

@@ -1,7 +1,6 @@
 #include "repair/split_nonmanifold.h"
 
 #include "meshprep/core/union_find.h"
-#include "meshprep/quality/face_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,9 +60,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> pair_around_edge(const Tria
 // The faces' corners at each vertex are joined across the edges that stay manifold (two faces,
 // or a pair chosen above); each resulting group is one fan, and every group after a vertex's
 // first gets a copy of the vertex.
-SplitCounts split_nonmanifold(TriangleSoup& soup) {
+SplitCounts split_nonmanifold(TriangleSoup& soup, const std::vector<FaceEdge>& uses) {
   SplitCounts counts;
-  const std::vector<FaceEdge> uses = sorted_face_edges(soup);
   UnionFind fans(3 * soup.triangles.size());
   const auto join = [&](const FaceEdge& edge, std::uint32_t f, std::uint32_t g) {
     fans.unite(corner(soup, f, edge.lo()), corner(soup, g, edge.lo()));

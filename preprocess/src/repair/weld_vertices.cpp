@@ -22,48 +22,91 @@ bool grid_fits(const TriangleSoup& soup, double distance) {
   return largest / distance < 9e15;
 }
 
-// Joins every pair of used vertices within `distance`: exact copies through a sort, near ones
-// through a grid of cells `distance` wide (a pair lies in neighbouring cells).
-std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, double distance, UnionFind& clusters) {
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t v = 0; v < soup.points.size(); ++v)
-    if (used[v]) order.push_back(v);
-  std::size_t joined = 0;
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+// Joins the exact copies among `vertices`, neighbours once sorted by position.
+std::size_t join_copies(const TriangleSoup& soup, std::vector<std::uint32_t>& vertices, UnionFind& clusters) {
+  std::sort(vertices.begin(), vertices.end(), [&](std::uint32_t a, std::uint32_t b) {
     const Vec3 &p = soup.points[a], &q = soup.points[b];
     return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
   });
-  for (std::size_t i = 1; i < order.size(); ++i)
-    if (soup.points[order[i]] == soup.points[order[i - 1]]) joined += clusters.unite(order[i], order[i - 1]);
-  if (!(distance > 0) || !grid_fits(soup, distance)) return joined;
-  // The used vertices sorted by their cell (x, y, z): the cells of one column (x, y) are a run,
-  // found by a binary search, so a vertex's 27 neighbouring cells are 9 searches.
+  std::size_t joined = 0;
+  for (std::size_t i = 1; i < vertices.size(); ++i)
+    if (soup.points[vertices[i]] == soup.points[vertices[i - 1]])
+      joined += clusters.unite(vertices[i], vertices[i - 1]);
+  return joined;
+}
+
+// Joins every pair among `vertices` within `distance` (> 0), exact copies included, through a grid
+// of cells `distance` wide: a pair lies in neighbouring cells.
+std::size_t join_within(const TriangleSoup& soup, const std::vector<std::uint32_t>& vertices, double distance,
+                        UnionFind& clusters) {
+  // The vertices sorted by their cell (x, y, z): the cells of one column (x, y) are a run, and a
+  // vertex's 27 neighbouring cells are the runs of 9 columns, each from (x + dx, y + dy, z - 1) on.
   struct Cell {
     std::int64_t x, y, z;
     std::uint32_t vertex;
     bool operator<(const Cell& o) const { return std::tie(x, y, z, vertex) < std::tie(o.x, o.y, o.z, o.vertex); }
   };
   std::vector<Cell> cells;
-  cells.reserve(order.size());
-  for (const std::uint32_t v : order) {
+  cells.reserve(vertices.size());
+  for (const std::uint32_t v : vertices) {
     const Vec3& p = soup.points[v];
     cells.push_back({static_cast<std::int64_t>(std::floor(p.x() / distance)),
                      static_cast<std::int64_t>(std::floor(p.y() / distance)),
                      static_cast<std::int64_t>(std::floor(p.z() / distance)), v});
   }
   std::sort(cells.begin(), cells.end());
+  // As c goes through the cells in order, each column's start (x + dx, y + dy, z - 1) only moves
+  // forward: nine cursors sweep the cells once, where a binary search per cell and column cost
+  // most of a clean weld.
+  std::array<std::vector<Cell>::const_iterator, 9> start;
+  start.fill(cells.begin());
   const double squared = distance * distance;
+  std::size_t joined = 0;
   for (const Cell& c : cells)
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         const Cell from{c.x + dx, c.y + dy, c.z - 1, 0};
-        for (auto it = std::lower_bound(cells.begin(), cells.end(), from);
-             it != cells.end() && it->x == from.x && it->y == from.y && it->z <= c.z + 1; ++it)
+        auto& column = start[static_cast<std::size_t>(3 * (dx + 1) + dy + 1)];
+        while (column != cells.end() && *column < from) ++column;
+        for (auto it = column; it != cells.end() && it->x == from.x && it->y == from.y && it->z <= c.z + 1; ++it)
           if (it->vertex > c.vertex &&
               (soup.points[it->vertex] - soup.points[c.vertex]).squaredNorm() <= squared)
             joined += clusters.unite(c.vertex, it->vertex);
       }
   return joined;
+}
+
+// Joins every pair of used vertices within `distance`, or, where the grid would not hold the
+// coordinates (or `distance` is 0), the exact copies only. Each cluster's root is its lowest
+// index (union_find.h), whichever pairs join it.
+std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, double distance, UnionFind& clusters) {
+  std::vector<std::uint32_t> vertices;
+  for (std::uint32_t v = 0; v < soup.points.size(); ++v)
+    if (used[v]) vertices.push_back(v);
+  if (distance > 0 && grid_fits(soup, distance)) return join_within(soup, vertices, distance, clusters);
+  return join_copies(soup, vertices, clusters);
+}
+
+using Corners = std::array<std::uint32_t, 3>;
+
+// Each face's sorted corners and index, sorted: faces on the same three vertices are neighbours,
+// in their order in the file. A counting sort by the smallest corner, then each corner's run
+// (about its degree) sorted alone, costs a fraction of one sort of all the faces.
+std::vector<std::pair<Corners, std::uint32_t>> by_corners(const std::vector<Triangle>& faces, std::size_t vertices) {
+  std::vector<std::size_t> run_end(vertices + 1, 0);  // shifted by one: run_end[v + 1]
+  for (const Triangle& t : faces) ++run_end[*std::min_element(t.begin(), t.end()) + 1];
+  for (std::size_t v = 1; v < run_end.size(); ++v) run_end[v] += run_end[v - 1];
+  std::vector<std::pair<Corners, std::uint32_t>> order(faces.size());
+  std::vector<std::size_t> next(run_end.begin(), run_end.end() - 1);  // where each run's next face goes
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    Corners sorted = faces[f];
+    std::sort(sorted.begin(), sorted.end());
+    order[next[sorted[0]]++] = {sorted, f};
+  }
+  for (std::size_t v = 0; v < vertices; ++v)
+    std::sort(order.begin() + static_cast<std::ptrdiff_t>(run_end[v]),
+              order.begin() + static_cast<std::ptrdiff_t>(run_end[v + 1]));
+  return order;
 }
 
 }  // namespace
@@ -89,16 +132,7 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
     else
       faces.push_back(t);
   }
-  // Faces on the same three vertices are neighbours once sorted by their sorted corners, then by
-  // their place in the file.
-  using Corners = std::array<std::uint32_t, 3>;
-  std::vector<std::pair<Corners, std::uint32_t>> order(faces.size());
-  for (std::uint32_t f = 0; f < faces.size(); ++f) {
-    Corners sorted = faces[f];
-    std::sort(sorted.begin(), sorted.end());
-    order[f] = {sorted, f};
-  }
-  std::sort(order.begin(), order.end());
+  const std::vector<std::pair<Corners, std::uint32_t>> order = by_corners(faces, soup.points.size());
   // (a, b, c) is a rotation of its sorted order iff an even number of its pairs are inverted.
   const auto forward = [&faces](std::uint32_t f) {
     const Triangle& t = faces[f];
@@ -135,6 +169,7 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
 
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
   std::vector<Vec3> points;
+  points.reserve(soup.points.size());  // all of them, on a clean surface
   for (Triangle& t : faces)
     for (std::uint32_t& v : t) {
       if (renumber[v] == UINT32_MAX) {

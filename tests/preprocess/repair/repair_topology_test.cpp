@@ -212,6 +212,22 @@ TEST(RepairHoles, ASphereWithoutItsCapIsClosedNearTheSphere) {
   for (std::size_t v = kept_points; v < soup.points.size(); ++v) EXPECT_NEAR(soup.points[v].norm(), 1.0, 0.03) << v;
 }
 
+// A face on the rim turned over: orientation turns it back, and the hole's walk then needs its rim
+// edge the right way round (the repair sorts the face edges again after any flip).
+TEST(RepairHoles, AFaceTurnedOverOnTheRimIsTurnedBackBeforeTheHoleIsFilled) {
+  TriangleSoup soup = sphere_without_cap();
+  const std::size_t on_rim = analyze_topology(soup).border_edge_faces.back();
+  ASSERT_NE(on_rim, 0u);  // the first face leads the orientation
+  std::swap(soup.triangles[on_rim][1], soup.triangles[on_rim][2]);
+  const RepairResult r = repair(soup);
+  EXPECT_EQ(r.flipped_faces, 1u);
+  ASSERT_EQ(r.holes.size(), 1u);
+  EXPECT_TRUE(r.holes[0].filled) << r.holes[0].left_open;
+  const Topology t = analyze_topology(soup);
+  EXPECT_TRUE(t.closed && t.manifold && t.oriented);
+  EXPECT_GT(signed_volume(soup), 0);
+}
+
 TEST(RepairHoles, ALoopLongerThanMaxHoleIsLeftOpenAndReported) {
   TriangleSoup soup = sphere_without_cap();
   const std::size_t faces = soup.triangles.size();
