@@ -14,7 +14,11 @@ bool names_three_vertices(const Triangle& t) { return t[0] != t[1] && t[1] != t[
 // alone, costs a third of one comparison sort of all 3 x faces edges, and those are most of what a
 // clean surface costs topology and repair.
 std::vector<FaceEdge> sorted_face_edges(const SoupView& soup) {
-  std::vector<std::size_t> run_end(soup.points.size() + 1, 0);  // shifted by one: run_end[v + 1]
+  // Sized by the largest index the faces name, not by the points: the sort asks nothing of them.
+  std::size_t vertices = 0;
+  for (const Triangle& t : soup.triangles)
+    vertices = std::max(vertices, std::size_t{*std::max_element(t.begin(), t.end())} + 1);
+  std::vector<std::size_t> run_end(vertices + 1, 0);  // shifted by one: run_end[v + 1]
   for (const Triangle& t : soup.triangles)
     if (names_three_vertices(t))
       for (int c = 0; c < 3; ++c) ++run_end[std::min(t[c], t[(c + 1) % 3]) + 1];

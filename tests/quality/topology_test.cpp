@@ -1,9 +1,12 @@
 #include "meshprep/quality/coincident_vertices.h"
+#include "meshprep/quality/face_edges.h"
 #include "meshprep/quality/topology.h"
 
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace meshprep;
 
@@ -133,4 +136,20 @@ TEST(CoincidentVertices, SplitSeamsAreFoundTouchingBodiesAreNot) {
   const TriangleSoup touching = test::merged(cube, test::translated(cube, {1, 0, 0}));  // share a face's corners
   EXPECT_EQ(find_coincident_vertices(touching).merged, 0u);
   EXPECT_TRUE(find_coincident_vertices(touching).welded.triangles.empty());
+}
+
+TEST(FaceEdges, SortedByEdgeThenFaceWhateverTheIndices) {
+  // The counting sort sizes its runs by the faces' own indices: faces naming vertices past the
+  // points (none given) or in any order still give every edge of every proper face, sorted by
+  // (edge, face), and no edge of a face that repeats a vertex.
+  TriangleSoup soup;
+  soup.triangles = {{7, 2, 5}, {5, 2, 9}, {3, 3, 1}, {9, 2, 0}};
+  const std::vector<FaceEdge> edges = sorted_face_edges(soup);
+  ASSERT_EQ(edges.size(), 9u);
+  for (std::size_t i = 1; i < edges.size(); ++i) {
+    const FaceEdge &x = edges[i - 1], &y = edges[i];
+    EXPECT_TRUE(x.key < y.key || (x.key == y.key && x.face < y.face));
+  }
+  EXPECT_EQ(std::count_if(edges.begin(), edges.end(), [](const FaceEdge& e) { return e.key == edge_key(2, 5); }), 2);
+  EXPECT_EQ(std::count_if(edges.begin(), edges.end(), [](const FaceEdge& e) { return e.face == 2; }), 0);
 }
