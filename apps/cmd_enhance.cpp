@@ -63,7 +63,8 @@ int run_enhance(EnhanceOptions o) {
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-")
     std::cout << o.input << " -> " << o.output << ": " << result.kept_round << " round(s), " << result.flips
-              << " flips in " << result.seconds << " s; faces under " << o.params.target_min_angle_deg << " deg "
+              << " flips and " << result.cap_flips << " of caps in " << result.seconds << " s; faces under "
+              << o.params.target_min_angle_deg << " deg "
               << 100 * result.before.under_target_fraction << " % -> " << 100 * result.after.under_target_fraction
               << " %, smallest angle " << result.before.min_angle_deg << " -> " << result.after.min_angle_deg
               << " deg, Hausdorff to the " << (reference ? "reference " : "input ")

@@ -346,10 +346,11 @@ class Run {
     params.progress = progress();
     const EnhanceResult e = on_input([&] { return enhance(mesh_, &result_.input_surface, params); });
     record.seconds = e.seconds;
-    record.details = picked(to_json(e, params), {"rounds", "kept_round", "flips", "removed_vertices", "split_edges"});
+    record.details = picked(to_json(e, params), {"rounds", "kept_round", "flips", "cap_flips", "removed_vertices", "split_edges"});
     record.details["smallest_angle_before_deg"] = e.before.min_angle_deg;
     record.details["smallest_angle_after_deg"] = e.after.min_angle_deg;
     record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";
+    if (e.cap_flips > 0) record.note += ", " + std::to_string(e.cap_flips) + " cap(s) flipped";
     measure(record);
     finish(std::move(record));
   }

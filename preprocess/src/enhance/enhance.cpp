@@ -222,7 +222,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   for (const auto& hit : coverage)
     allowed_distance.push_back(std::max(round_deviation, std::sqrt(hit.squared_distance)));
   QualityTail best = result.before;
-  std::size_t flips_made = 0, removed_vertices = 0, split_edges = 0;
+  std::size_t flips_made = 0, cap_flips_made = 0, removed_vertices = 0, split_edges = 0;
   TriMesh best_mesh = mesh;
   int stale_rounds = 0;
   for (std::size_t round = 1; round <= params.iterations; ++round) {
@@ -231,13 +231,15 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
       const TriMesh before_cleanup = mesh;
       const detail::CleanupRules rules{params.flip_dihedral_deg, round_deviation, min_angle_cosine};
       const std::size_t flips = detail::flip_for_angles(mesh, constraints, rules);
+      const std::size_t cap_flips = detail::flip_caps(mesh, constraints, rules);
       const std::size_t removed = detail::collapse_for_angles(mesh, constraints, rules, removal_budget - removed_vertices);
       const std::size_t split_budget = (face_budget + 2 * (removed_vertices + removed)) / 2 - split_edges;
       const std::size_t splits = detail::split_for_angles(mesh, constraints, rules, split_budget);
-      if (flips + removed + splits > 0 && find_self_intersections(MeshSoupView(mesh)).count > allowed_intersections) {
+      if (flips + cap_flips + removed + splits > 0 && find_self_intersections(MeshSoupView(mesh)).count > allowed_intersections) {
         mesh = before_cleanup;
       } else {
         flips_made += flips;
+        cap_flips_made += cap_flips;
         removed_vertices += removed;
         split_edges += splits;
       }
@@ -264,6 +266,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     best_mesh = mesh;
     result.kept_round = round;
     result.flips = flips_made;
+    result.cap_flips = cap_flips_made;
     result.removed_vertices = removed_vertices;
     result.split_edges = split_edges;
   }

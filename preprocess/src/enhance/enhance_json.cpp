@@ -20,6 +20,7 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
   json["rounds"] = result.rounds;
   json["kept_round"] = result.kept_round;
   json["flips"] = result.flips;
+  json["cap_flips"] = result.cap_flips;
   json["removed_vertices"] = result.removed_vertices;
   json["split_edges"] = result.split_edges;
   json["line_vertices"] = result.line_vertices;

@@ -201,15 +201,34 @@ TriMesh::VertexHandle SurfaceConstraints::split_surface_edge(EdgeHandle e, bool 
   return m;
 }
 
-TriMesh::VertexHandle SurfaceConstraints::split_feature_edge(EdgeHandle e) {
-  const auto h = mesh_.halfedge_handle(e, 0);
-  const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+int SurfaceConstraints::line_of_feature_edge(VertexHandle a, VertexHandle b) {
   int line = role(a) == VertexRole::Line ? mesh_.property(line_, a) : -1;
   if (line < 0 && role(b) == VertexRole::Line) line = mesh_.property(line_, b);
   if (line < 0) {
     line = static_cast<int>(lines_.size());
     lines_.push_back({{point(mesh_, a), point(mesh_, b)}});
   }
+  return line;
+}
+
+void SurfaceConstraints::flip_feature_through_apex(TriMesh::HalfedgeHandle h) {
+  const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+  const VertexHandle apex = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h));
+  const int line = line_of_feature_edge(a, b);
+  const EdgeHandle e = mesh_.edge_handle(h);
+  mesh_.flip(e);
+  mesh_.property(feature_, e) = 0;
+  mesh_.property(feature_, mesh_.edge_handle(mesh_.find_halfedge(apex, a))) = 1;
+  mesh_.property(feature_, mesh_.edge_handle(mesh_.find_halfedge(apex, b))) = 1;
+  mesh_.property(role_, apex) = VertexRole::Line;
+  mesh_.property(line_, apex) = line;
+  mesh_.property(offset_, apex) = 0;
+}
+
+TriMesh::VertexHandle SurfaceConstraints::split_feature_edge(EdgeHandle e) {
+  const auto h = mesh_.halfedge_handle(e, 0);
+  const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+  const int line = line_of_feature_edge(a, b);
   const VertexHandle m = mesh_.add_vertex(mesh_.point(a));
   mesh_.property(role_, m) = VertexRole::Line;
   mesh_.property(line_, m) = line;

@@ -18,7 +18,7 @@ enum class VertexRole : std::uint8_t {
 
 /// The features of a mesh, found once at the start, kept as properties of the mesh (so that they
 /// follow its elements through flips, collapses and garbage collection; flips and collapses never
-/// touch a feature edge or a vertex on one).
+/// touch a feature edge or a vertex on one, but for a cap's long edge: flip_feature_through_apex).
 ///
 /// Features are boundary edges and creases. A crease is a run, at least five median edge lengths
 /// long, of edges whose dihedral angles exceed the feature angle, joined at vertices where the run
@@ -64,6 +64,10 @@ class SurfaceConstraints {
   /// vertex on the line of either end (an edge between two corners starts a line of its own
   /// segment). Its two halves stay feature edges. Returns the new vertex.
   TriMesh::VertexHandle split_feature_edge(TriMesh::EdgeHandle e);
+  /// Flips feature edge e = (a, b), the long edge of a cap (a, b, apex) (h its halfedge in the
+  /// cap), apex a Surface vertex: the feature then runs a-apex-b, apex a Line vertex on the line
+  /// of either end (as split_feature_edge puts its new vertex), and the new edge is no feature.
+  void flip_feature_through_apex(TriMesh::HalfedgeHandle h);
   /// Closest point of the reference surface to x.
   TriangleBvh::Hit closest_on_reference(const Vec3& x) const { return bvh_.closest_point(x); }
   const TriangleBvh& reference_bvh() const { return bvh_; }
@@ -74,6 +78,9 @@ class SurfaceConstraints {
   struct Segment {
     Vec3 a, b;
   };
+  /// The line a new vertex on feature edge (a, b) belongs to: either end's, or a new line of the
+  /// edge's own segment when both are corners.
+  int line_of_feature_edge(TriMesh::VertexHandle a, TriMesh::VertexHandle b);
   TriMesh& mesh_;
   OpenMesh::VPropHandleT<VertexRole> role_;
   OpenMesh::VPropHandleT<int> line_;          ///< Line vertices: index into lines_; -1 otherwise

@@ -23,6 +23,25 @@ double distance_to_reference(const SurfaceConstraints& constraints, const Vec3& 
   return std::sqrt(constraints.closest_on_reference(p).squared_distance);
 }
 
+// Whether flipping the edge of h0 sharpens an edge of its quad into a fold with the face beyond
+// it. The faces (a, b, c) (normal n0, h0 = a -> b) and (b, a, d) (n1) become (a, d, c) (m0), which
+// takes edges c-a and a-d, and (d, b, c) (m1), which takes d-b and b-c.
+bool flip_makes_fold(const TriMesh& mesh, TriMesh::HalfedgeHandle h0, const Vec3& n0, const Vec3& n1, const Vec3& m0,
+                     const Vec3& m1) {
+  const auto h1 = mesh.opposite_halfedge_handle(h0);
+  const auto outside = [&](TriMesh::HalfedgeHandle h) { return mesh.opposite_face_handle(h); };
+  const std::pair<TriMesh::FaceHandle, std::pair<const Vec3*, const Vec3*>> sides[] = {
+      {outside(mesh.prev_halfedge_handle(h0)), {&n0, &m0}}, {outside(mesh.next_halfedge_handle(h1)), {&n1, &m0}},
+      {outside(mesh.prev_halfedge_handle(h1)), {&n1, &m1}}, {outside(mesh.next_halfedge_handle(h0)), {&n0, &m1}}};
+  for (const auto& [face, normals] : sides) {
+    if (!face.is_valid()) continue;
+    const Vec3 neighbour = to_eigen(mesh.calc_face_normal(face));
+    if (sharpens_into_fold(normal_cosine(*normals.first, neighbour), normal_cosine(*normals.second, neighbour)))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules) {
@@ -42,19 +61,7 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
     const Vec3 n0 = area_normal(a, b, c), n1 = area_normal(b, a, d);
     const Vec3 m0 = area_normal(a, d, c), m1 = area_normal(d, b, c);
     if (m0.dot(m1) < cos_max * m0.norm() * m1.norm()) continue;
-    // No new fold with the faces around the quad: (a, d, c) takes edges c-a of (a, b, c) and a-d
-    // of (b, a, d), (d, b, c) takes d-b and b-c.
-    const auto outside = [&](TriMesh::HalfedgeHandle h) { return mesh.opposite_face_handle(h); };
-    const std::pair<TriMesh::FaceHandle, std::pair<const Vec3*, const Vec3*>> sides[] = {
-        {outside(mesh.prev_halfedge_handle(h0)), {&n0, &m0}}, {outside(mesh.next_halfedge_handle(h1)), {&n1, &m0}},
-        {outside(mesh.prev_halfedge_handle(h1)), {&n1, &m1}}, {outside(mesh.next_halfedge_handle(h0)), {&n0, &m1}}};
-    bool folds = false;
-    for (const auto& [face, normals] : sides) {
-      if (!face.is_valid()) continue;
-      const Vec3 neighbour = to_eigen(mesh.calc_face_normal(face));
-      folds = folds || sharpens_into_fold(normal_cosine(*normals.first, neighbour), normal_cosine(*normals.second, neighbour));
-    }
-    if (folds) continue;
+    if (flip_makes_fold(mesh, h0, n0, n1, m0, m1)) continue;
     // A fold (the two faces turned by more than 90 degrees against each other: a thin wedge that
     // TetGen can only fill with flat tets) is undone when the flip leaves the two faces nearly
     // coplanar and no angle under the target that was not there.
@@ -72,6 +79,69 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
     const double old_gap = distance_to_reference(constraints, 0.5 * (a + b));
     if (distance_to_reference(constraints, 0.5 * (c + d)) > std::max(old_gap, rules.max_deviation)) continue;
     mesh.flip(e);
+    ++flips;
+  }
+  return flips;
+}
+
+namespace {
+
+// The largest angle of triangle (a, b, c), from the smallest cosine.
+double largest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const double lab = ab.norm(), lbc = bc.norm(), lca = ca.norm();
+  if (lab == 0 || lbc == 0 || lca == 0) return -1.0;
+  return std::min({-ab.dot(ca) / (lab * lca), -bc.dot(ab) / (lbc * lab), -ca.dot(bc) / (lca * lbc)});
+}
+
+// The halfedge of face f opposite its angle of at least kCapAngleDeg (the cap's long edge, seen
+// from the cap); invalid if f is no cap.
+TriMesh::HalfedgeHandle cap_long_edge(const TriMesh& mesh, TriMesh::FaceHandle f, double cap_cosine) {
+  for (const auto h : mesh.fh_range(f)) {
+    const Vec3 a = point(mesh, mesh.from_vertex_handle(h)), b = point(mesh, mesh.to_vertex_handle(h));
+    const Vec3 apex = point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+    if ((a - apex).dot(b - apex) <= cap_cosine * (a - apex).norm() * (b - apex).norm()) return h;
+  }
+  return TriMesh::HalfedgeHandle();
+}
+
+}  // namespace
+
+std::size_t flip_caps(TriMesh& mesh, SurfaceConstraints& constraints, const CleanupRules& rules) {
+  const double cap_cosine = std::cos(kCapAngleDeg * M_PI / 180.0);
+  std::size_t flips = 0;
+  for (const auto f : mesh.faces()) {
+    if (mesh.status(f).deleted()) continue;
+    const auto h0 = cap_long_edge(mesh, f, cap_cosine);
+    if (!h0.is_valid()) continue;
+    const auto h1 = mesh.opposite_halfedge_handle(h0);
+    const auto e = mesh.edge_handle(h0);
+    if (mesh.is_boundary(e) || !mesh.is_flip_ok(e)) continue;
+    const VertexHandle va = mesh.from_vertex_handle(h0), vb = mesh.to_vertex_handle(h0);
+    if (mesh.valence(va) <= 3 || mesh.valence(vb) <= 3) continue;
+    const Vec3 a = point(mesh, va), b = point(mesh, vb);
+    const VertexHandle v_apex = mesh.to_vertex_handle(mesh.next_halfedge_handle(h0));
+    if (!constraints.is_feature(e) || constraints.role(v_apex) != VertexRole::Surface ||
+        constraints.is_feature(mesh.edge_handle(mesh.next_halfedge_handle(h0))) ||
+        constraints.is_feature(mesh.edge_handle(mesh.prev_halfedge_handle(h0))))
+      continue;
+    const Vec3 apex = point(mesh, v_apex);
+    const Vec3 d = point(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(h1)));
+    if (largest_angle_cosine(b, a, d) <= cap_cosine) continue;  // two caps: no normal to trust
+    // The faces (a, b, apex) and (b, a, d) become (a, d, apex) and (d, b, apex): the surface
+    // moves by at most the apex's distance to the long edge.
+    if ((apex - a).cross(b - a).norm() > rules.max_deviation * (b - a).norm()) continue;
+    const double before = std::max(smallest_angle_cosine(a, b, apex), smallest_angle_cosine(b, a, d));
+    const double after = std::max(smallest_angle_cosine(a, d, apex), smallest_angle_cosine(d, b, apex));
+    if (!(after < before - 1e-9)) continue;
+    if (largest_angle_cosine(a, d, apex) <= cap_cosine || largest_angle_cosine(d, b, apex) <= cap_cosine) continue;
+    const Vec3 n_cap = area_normal(a, b, apex), n_other = area_normal(b, a, d);
+    const Vec3 m0 = area_normal(a, d, apex), m1 = area_normal(d, b, apex);
+    if (m0.dot(n_other) <= 0 || m1.dot(n_other) <= 0) continue;
+    if (flip_makes_fold(mesh, h0, n_cap, n_other, m0, m1)) continue;
+    const double old_gap = distance_to_reference(constraints, 0.5 * (a + b));
+    if (distance_to_reference(constraints, 0.5 * (apex + d)) > std::max(old_gap, rules.max_deviation)) continue;
+    constraints.flip_feature_through_apex(h0);
     ++flips;
   }
   return flips;

@@ -11,6 +11,10 @@
 
 namespace meshprep::detail {
 
+/// A face with an angle this large is a cap: its apex lies nearly on its longest edge (CGAL's
+/// remove_almost_degenerate_faces takes the same default).
+inline constexpr double kCapAngleDeg = 160;
+
 struct CleanupRules {
   double max_dihedral_deg = 20;  ///< the two faces after a flip must be this close to coplanar
   double max_deviation = 0;      ///< absolute distance to the reference a change may reach anyway
@@ -24,6 +28,19 @@ struct CleanupRules {
 /// reference than max(the old one's, max_deviation). The two old faces are not asked to be
 /// coplanar: a cap (an angle near 180 degrees) has no reliable normal. Returns the flips made.
 std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints, const CleanupRules& rules);
+
+/// Flips the long edge of each cap (a face with an angle of at least kCapAngleDeg) where that
+/// edge is a crease and the apex on no feature: the crease then runs through the apex instead
+/// (SurfaceConstraints::flip_feature_through_apex). A cap's normal is noise, so its long edge may
+/// look like a crease, which flip_for_angles never flips; a cap's largest angle caps the dihedral
+/// angles of the tet TetGen builds on it (bull: a 171.6 degree cap, its tets stuck at 170
+/// degrees). Made only where the surface moves by at most max_deviation (the apex is that close to
+/// the long edge, and the new diagonal's midpoint is no farther from the reference than max(the
+/// old one's, max_deviation)), the pair's smallest angle grows, no new angle reaches
+/// kCapAngleDeg, the other face is no cap, the new faces face as it does, and no fold forms with
+/// the faces around. Caps on no crease are left to flip_for_angles and the relocation: flipping
+/// them too cost the camel its smallest angle (20.2 to 12.4 degrees). Returns the flips made.
+std::size_t flip_caps(TriMesh& mesh, SurfaceConstraints& constraints, const CleanupRules& rules);
 
 /// Removes Surface vertices where a smallest angle around them is under the target: each is
 /// collapsed into the neighbour (kept where it is) that gives the best worst angle, when that beats

@@ -180,6 +180,56 @@ TEST(Enhance, NeedlesOnAPlaneAreSplitInIt) {
   }
 }
 
+TEST(Enhance, ACapOnACreaseIsFlippedAndTheCreaseRunsThroughItsApex) {
+  // On a cube of 6 x 6 x 2 faces a side, the vertex of side y = 0 over the crease edge from
+  // (2, 0, 0) to (3, 0, 0) is pulled to 0.01 above that edge's midpoint: a cap of about 178.9
+  // degrees whose long edge is the crease. Its flip moves the surface by 0.01, so it is made with
+  // a bound of 0.02 and not with 0.005. Made, the crease runs (2, 0, 0) - apex - (3, 0, 0).
+  for (const double bound : {0.02, 0.005}) {
+    TriangleSoup cube = test::subdivided_cube(6);
+    const auto on_crease = [](const Vec3& p) { return p.y() == 0 && p.z() == 0; };
+    std::size_t apex = cube.points.size();
+    for (const Triangle& t : cube.triangles)
+      for (int i = 0; i < 3; ++i) {
+        const Vec3 &a = cube.points[t[i]], &b = cube.points[t[(i + 1) % 3]], &c = cube.points[t[(i + 2) % 3]];
+        if (on_crease(a) && on_crease(b) && std::min(a.x(), b.x()) == 2 && std::max(a.x(), b.x()) == 3 && c.y() == 0)
+          apex = t[(i + 2) % 3];
+      }
+    ASSERT_LT(apex, cube.points.size());
+    cube.points[apex] = Vec3(2.5, 0, 0.01);
+    TriMesh mesh = mesh_from_soup(cube);
+    detail::SurfaceConstraints constraints(mesh, cube, 45.0);
+    const TriMesh::VertexHandle v_apex(static_cast<int>(apex));
+    ASSERT_EQ(constraints.role(v_apex), detail::VertexRole::Surface);
+    const detail::CleanupRules rules{20.0, bound, std::cos(20.0 * M_PI / 180)};
+    const std::size_t flips = detail::flip_caps(mesh, constraints, rules);
+    double largest = 0;
+    for (const TriangleShape& shape : triangle_shapes(soup_from_mesh(mesh))) largest = std::max(largest, shape.max_angle_deg);
+    if (bound < 0.01) {
+      EXPECT_EQ(flips, 0u);
+      EXPECT_GT(largest, detail::kCapAngleDeg);
+      continue;
+    }
+    EXPECT_EQ(flips, 1u);
+    EXPECT_LT(largest, detail::kCapAngleDeg);
+    EXPECT_EQ(constraints.role(v_apex), detail::VertexRole::Line);
+    // The crease edges along y = z = 0, the apex's two among them; none between (2, 0, 0) and
+    // (3, 0, 0) any more.
+    std::size_t apex_features = 0;
+    for (const auto e : mesh.edges()) {
+      const auto h = mesh.halfedge_handle(e, 0);
+      const Vec3 a = at(mesh, mesh.from_vertex_handle(h)), b = at(mesh, mesh.to_vertex_handle(h));
+      const bool at_apex = mesh.from_vertex_handle(h) == v_apex || mesh.to_vertex_handle(h) == v_apex;
+      const bool crease = constraints.is_feature(e);
+      if (at_apex) apex_features += crease;
+      EXPECT_FALSE(crease && std::min(a.x(), b.x()) == 2 && std::max(a.x(), b.x()) == 3 && a.y() == 0 && b.y() == 0 &&
+                   a.z() == 0 && b.z() == 0);
+    }
+    EXPECT_EQ(apex_features, 2u);
+    EXPECT_EQ(find_self_intersections(soup_from_mesh(mesh)).count, 0u);
+  }
+}
+
 TEST(Enhance, ShapeResidualDerivativesAgree) {
   // The mean-ratio residual on curved charts: automatic derivatives against Ceres' numeric ones
   // (GradientChecker), and against the analytic ones of r = s (E / (2 sqrt(3) D) - 1), E the sum

@@ -74,6 +74,7 @@ struct EnhanceResult {
   std::size_t rounds = 0;               ///< rounds run (the last may have been discarded)
   std::size_t kept_round = 0;           ///< the round whose mesh was kept (0 = the input)
   std::size_t flips = 0;
+  std::size_t cap_flips = 0;            ///< caps' long edges flipped, crease or not (not in flips)
   std::size_t removed_vertices = 0;     ///< of valence 3 (two faces each)
   std::size_t split_edges = 0;          ///< on a plane, under needles (two faces each)
   double max_deviation = 0;             ///< the bound used, relative to the reference's diagonal
@@ -101,7 +102,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
 nlohmann::ordered_json to_json(const QualityTail& tail);
 
 /// The run as `meshprep enhance --json` writes it, in this order: rounds, kept_round, flips,
-/// removed_vertices, split_edges, line_vertices, fixed_vertices, undone_moves, parameters (the
+/// cap_flips, removed_vertices, split_edges, line_vertices, fixed_vertices, undone_moves, parameters (the
 /// bound used, whether it was automatic, and the settings of `params`), tail_before, tail_after,
 /// time_seconds. The pipeline's stage record picks from it.
 nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams& params);
