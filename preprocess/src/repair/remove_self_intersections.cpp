@@ -236,8 +236,13 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
   for (std::uint32_t v = 0; v < surface.points.size(); ++v) closed_parts += parts.find(v) == v && !open[v];
   if (pairs.empty() && closed_parts <= 1) return pass;
   TriangleSoup closed_surface{surface.points, {}};
+  std::vector<std::uint32_t> closed_part;
   for (std::size_t f = 0; f < surface.triangles.size(); ++f)
-    if (closed_face(f)) closed_surface.triangles.push_back(surface.triangles[f]);
+    if (closed_face(f)) {
+      closed_surface.triangles.push_back(surface.triangles[f]);
+      closed_part.push_back(parts.find(surface.triangles[f][0]));
+    }
+  const WindingNumber winding_number(closed_surface, closed_part);
 
   CutSurface cut = cut_along_intersections(surface, pairs);
   pass.cut_faces = cut.cut_faces;
@@ -256,7 +261,7 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
   for (const auto& [p, face] : widest) judged[k++] = {p, face.first};
   std::vector<long> winding(judged.size());
   tbb::parallel_for(std::size_t{0}, judged.size(), [&](std::size_t i) {
-    winding[i] = std::lround(winding_number(closed_surface, just_outside(cut.soup, judged[i].second).point));
+    winding[i] = std::lround(winding_number.at(just_outside(cut.soup, judged[i].second).point));
   });
   std::map<std::uint32_t, long> outside;
   for (std::size_t i = 0; i < judged.size(); ++i) outside[judged[i].first] = winding[i];
