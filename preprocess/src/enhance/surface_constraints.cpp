@@ -229,7 +229,8 @@ TriMesh::VertexHandle SurfaceConstraints::split_feature_edge(EdgeHandle e) {
   const auto h = mesh_.halfedge_handle(e, 0);
   const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
   const int line = line_of_feature_edge(a, b);
-  const VertexHandle m = mesh_.add_vertex(mesh_.point(a));
+  const TriMesh::Point at_a = mesh_.point(a);  // a copy: adding a vertex may move the points
+  const VertexHandle m = mesh_.add_vertex(at_a);
   mesh_.property(role_, m) = VertexRole::Line;
   mesh_.property(line_, m) = line;
   mesh_.property(offset_, m) = 0;
