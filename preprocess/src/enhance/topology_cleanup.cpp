@@ -86,14 +86,6 @@ std::size_t flip_for_angles(TriMesh& mesh, const SurfaceConstraints& constraints
 
 namespace {
 
-// The largest angle of triangle (a, b, c), from the smallest cosine.
-double largest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, bc = c - b, ca = a - c;
-  const double lab = ab.norm(), lbc = bc.norm(), lca = ca.norm();
-  if (lab == 0 || lbc == 0 || lca == 0) return -1.0;
-  return std::min({-ab.dot(ca) / (lab * lca), -bc.dot(ab) / (lbc * lab), -ca.dot(bc) / (lca * lbc)});
-}
-
 // The halfedge of face f opposite its angle of at least kCapAngleDeg (the cap's long edge, seen
 // from the cap); invalid if f is no cap.
 TriMesh::HalfedgeHandle cap_long_edge(const TriMesh& mesh, TriMesh::FaceHandle f, double cap_cosine) {

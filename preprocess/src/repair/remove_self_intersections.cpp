@@ -235,14 +235,10 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
   std::size_t closed_parts = 0;
   for (std::uint32_t v = 0; v < surface.points.size(); ++v) closed_parts += parts.find(v) == v && !open[v];
   if (pairs.empty() && closed_parts <= 1) return pass;
-  TriangleSoup closed_surface{surface.points, {}};
-  std::vector<std::uint32_t> closed_part;
+  std::vector<std::uint32_t> closed_part(surface.triangles.size(), WindingNumber::kNoPart);
   for (std::size_t f = 0; f < surface.triangles.size(); ++f)
-    if (closed_face(f)) {
-      closed_surface.triangles.push_back(surface.triangles[f]);
-      closed_part.push_back(parts.find(surface.triangles[f][0]));
-    }
-  const WindingNumber winding_number(closed_surface, closed_part);
+    if (closed_face(f)) closed_part[f] = parts.find(surface.triangles[f][0]);
+  const WindingNumber winding_number(surface, closed_part);
 
   CutSurface cut = cut_along_intersections(surface, pairs);
   pass.cut_faces = cut.cut_faces;

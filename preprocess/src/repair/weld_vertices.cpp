@@ -1,5 +1,6 @@
 #include "repair/weld_vertices.h"
 
+#include "meshprep/core/bucket_sort.h"
 #include "meshprep/core/union_find.h"
 #include "meshprep/quality/face_edges.h"
 
@@ -7,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -90,22 +92,16 @@ std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, 
 using Corners = std::array<std::uint32_t, 3>;
 
 // Each face's sorted corners and index, sorted: faces on the same three vertices are neighbours,
-// in their order in the file. A counting sort by the smallest corner, then each corner's run
-// (about its degree) sorted alone, costs a fraction of one sort of all the faces.
-std::vector<std::pair<Corners, std::uint32_t>> by_corners(const std::vector<Triangle>& faces, std::size_t vertices) {
-  std::vector<std::size_t> run_end(vertices + 1, 0);  // shifted by one: run_end[v + 1]
-  for (const Triangle& t : faces) ++run_end[*std::min_element(t.begin(), t.end()) + 1];
-  for (std::size_t v = 1; v < run_end.size(); ++v) run_end[v] += run_end[v - 1];
-  std::vector<std::pair<Corners, std::uint32_t>> order(faces.size());
-  std::vector<std::size_t> next(run_end.begin(), run_end.end() - 1);  // where each run's next face goes
+// in their order in the file. Sorted by their smallest corner's runs (bucket_sort.h).
+std::vector<std::pair<Corners, std::uint32_t>> by_corners(const std::vector<Triangle>& faces) {
+  using Entry = std::pair<Corners, std::uint32_t>;
+  std::vector<Entry> order(faces.size());
   for (std::uint32_t f = 0; f < faces.size(); ++f) {
     Corners sorted = faces[f];
     std::sort(sorted.begin(), sorted.end());
-    order[next[sorted[0]]++] = {sorted, f};
+    order[f] = {sorted, f};
   }
-  for (std::size_t v = 0; v < vertices; ++v)
-    std::sort(order.begin() + static_cast<std::ptrdiff_t>(run_end[v]),
-              order.begin() + static_cast<std::ptrdiff_t>(run_end[v + 1]));
+  sort_by_buckets(order, [](const Entry& e) { return e.first[0]; }, std::less<Entry>());
   return order;
 }
 
@@ -132,7 +128,7 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
     else
       faces.push_back(t);
   }
-  const std::vector<std::pair<Corners, std::uint32_t>> order = by_corners(faces, soup.points.size());
+  const std::vector<std::pair<Corners, std::uint32_t>> order = by_corners(faces);
   // (a, b, c) is a rotation of its sorted order iff an even number of its pairs are inverted.
   const auto forward = [&faces](std::uint32_t f) {
     const Triangle& t = faces[f];

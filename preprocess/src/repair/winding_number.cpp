@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace meshprep::detail {
 
 WindingNumber::WindingNumber(const TriangleSoup& soup, const std::vector<std::uint32_t>& part_of_face) : soup_(soup) {
-  faces_.resize(soup.triangles.size());
-  std::iota(faces_.begin(), faces_.end(), 0u);
+  for (std::uint32_t f = 0; f < soup.triangles.size(); ++f)
+    if (part_of_face[f] != kNoPart) faces_.push_back(f);
   std::stable_sort(faces_.begin(), faces_.end(),
                    [&](std::uint32_t f, std::uint32_t g) { return part_of_face[f] < part_of_face[g]; });
   for (std::size_t i = 0; i < faces_.size();) {

@@ -16,7 +16,9 @@ namespace meshprep::detail {
 /// apart costs about one part a query, not all of them.
 class WindingNumber {
  public:
-  /// `part_of_face[f]` names the closed part of soup.triangles[f]. `soup` must outlive this.
+  static constexpr std::uint32_t kNoPart = UINT32_MAX;
+  /// `part_of_face[f]` names the closed part of soup.triangles[f], or is kNoPart for a face left
+  /// out (an open part's). `soup` must outlive this.
   WindingNumber(const TriangleSoup& soup, const std::vector<std::uint32_t>& part_of_face);
   /// \pre q is not on the surface
   double at(const Vec3& q) const;

@@ -6,18 +6,31 @@
 #include "meshprep/core/soup_view.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 namespace meshprep::detail {
+
+/// The cosines of the triangle's angles at a, b and c; none for a triangle with a zero-length side.
+inline std::optional<std::array<double, 3>> angle_cosines(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const double lab = ab.norm(), lbc = bc.norm(), lca = ca.norm();
+  if (lab == 0 || lbc == 0 || lca == 0) return std::nullopt;
+  return std::array<double, 3>{-ab.dot(ca) / (lab * lca), -bc.dot(ab) / (lbc * lab), -ca.dot(bc) / (lca * lbc)};
+}
 
 /// Cosine of the triangle's smallest angle (the largest of its three angle cosines; the smallest
 /// angle faces the shortest side); 1 for a triangle with a zero-length side.
 inline double smallest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, bc = c - b, ca = a - c;
-  const double lab = ab.norm(), lbc = bc.norm(), lca = ca.norm();
-  if (lab == 0 || lbc == 0 || lca == 0) return 1.0;
-  const double at_a = -ab.dot(ca) / (lab * lca), at_b = -bc.dot(ab) / (lbc * lab), at_c = -ca.dot(bc) / (lca * lbc);
-  return std::max({at_a, at_b, at_c});
+  const auto cosines = angle_cosines(a, b, c);
+  return cosines ? std::max({(*cosines)[0], (*cosines)[1], (*cosines)[2]}) : 1.0;
+}
+
+/// Cosine of the triangle's largest angle; -1 for a triangle with a zero-length side.
+inline double largest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const auto cosines = angle_cosines(a, b, c);
+  return cosines ? std::min({(*cosines)[0], (*cosines)[1], (*cosines)[2]}) : -1.0;
 }
 
 /// (b - a) x (c - a): twice the area times the unit normal.
