@@ -1,5 +1,6 @@
 // Conversions between the halfedge mesh and the indexed triangle soup.
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/mesh_patches.h"
 #include "meshprep/core/soup_view.h"
 
 #include "meshprep/core/errors.h"
@@ -74,6 +75,12 @@ TriangleSoup soup_from_mesh(const TriMesh& mesh) {
     if (corner == unused) throw Error("soup_from_mesh: a face uses a deleted vertex");
     return corner;
   });
+  const FacePatches patches(mesh);
+  if (patches.present()) {
+    soup.patches.reserve(soup.triangles.size());
+    for (const TriMesh::FaceHandle f : mesh.faces()) soup.patches.push_back(patches.of(f));  // skips deleted faces
+    soup.patch_names = patch_names(mesh);
+  }
   return soup;
 }
 
@@ -97,6 +104,10 @@ TriMesh mesh_from_soup(const TriangleSoup& soup, MeshBuildReport* report) {
   for (const Vec3& p : soup.points) vertices.push_back(mesh.add_vertex(to_openmesh(p)));
 
   if (report) report->dropped_faces.clear();
+  if (!soup.patches.empty() && soup.patches.size() != soup.triangles.size())
+    throw InvalidInput("mesh_from_soup: " + std::to_string(soup.patches.size()) + " patches for " +
+                       std::to_string(soup.triangles.size()) + " triangles");
+  std::vector<int> patches;  // of the faces added
   const SilencedOmerr silenced;
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const Triangle& t = soup.triangles[f];
@@ -110,7 +121,9 @@ TriMesh mesh_from_soup(const TriangleSoup& soup, MeshBuildReport* report) {
     const bool repeats = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
     const bool added = !repeats && mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]).is_valid();
     if (!added && report) report->dropped_faces.push_back(f);
+    if (added && !soup.patches.empty()) patches.push_back(soup.patches[f]);
   }
+  if (!soup.patches.empty()) set_face_patches(mesh, patches, soup.patch_names);
   return mesh;
 }
 

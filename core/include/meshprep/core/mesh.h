@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -42,11 +43,20 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 using Vec3 = Eigen::Vector3d;
 using Triangle = std::array<std::uint32_t, 3>;
 
+/// The names of tags (boundary patches, regions) by tag, each >= 1. A tag may have no name; the
+/// writers then use a default (patch_names.h, tag_name). Names follow patch_names.h's rule.
+using TagNames = std::map<int, std::string>;
+
 /// Indexed triangles exactly as read (no vertex merging, no dropped faces).
-/// Invariant: every index is < points.size().
+/// Invariants: every index is < points.size(); `patches` is empty or holds one tag >= 1 per
+/// triangle.
 struct TriangleSoup {
   std::vector<Vec3> points;
   std::vector<Triangle> triangles;
+  /// The boundary patch of each triangle: a named set of faces where a solver fixes, loads or
+  /// heats the part (patch_names.h). Empty when the surface has none.
+  std::vector<int> patches = {};
+  TagNames patch_names = {};  ///< the names of the tags in `patches`
 };
 
 /// The soup of a halfedge mesh (deleted elements skipped, vertices renumbered densely).

@@ -1,7 +1,7 @@
 #pragma once
 /// \file tet_mesh.h
-/// A linear tetrahedral mesh with region tags on cells and on boundary faces: what TetGen
-/// produces and what the exporters write.
+/// A linear tetrahedral mesh with region tags on cells and named tags (patches) on boundary
+/// faces: what TetGen produces and what the exporters write.
 
 #include "meshprep/core/mesh.h"
 
@@ -21,6 +21,9 @@ struct TetMesh {
   /// Boundary triangles, oriented with outward normals (counter-clockwise seen from outside).
   std::vector<Triangle> boundary_faces;
   std::vector<int> boundary_tags;  ///< one per boundary face, >= 1 (1 = default surface tag)
+  /// The names of the boundary tags (the surface's patches) and of the regions, where known.
+  TagNames boundary_names = {};
+  TagNames region_names = {};
 };
 
 /// Signed volume of tet t: (p1 - p0) . ((p2 - p0) x (p3 - p0)) / 6.
