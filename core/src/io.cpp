@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 
 namespace meshprep {
 namespace {
@@ -19,6 +20,35 @@ detail::SoupReader reader_for(const std::string& path, const std::string& extens
   detail::fail(path, detail::unknown_extension_problem(extension));
 }
 
+// The file's groups made the soup's patches (io.h): faces outside any group (0) join "default",
+// a tag the file names without faces is no patch, a single group is dropped (the part's name),
+// names are made to follow the rule. A reader's tags are kept (PLY's are the file's own values).
+void settle_patches(TriangleSoup& soup, ReadReport& read) {
+  if (soup.patches.empty()) {
+    soup.patch_names.clear();
+    return;
+  }
+  soup.patches.resize(soup.triangles.size(), 0);
+  std::map<int, std::size_t> faces;
+  for (const int patch : soup.patches) ++faces[patch];
+  TagNames names;
+  for (const auto& [tag, count] : faces)
+    if (tag != 0) names[tag] = soup.patch_names.count(tag) ? soup.patch_names.at(tag) : "patch_" + std::to_string(tag);
+  if (faces.count(0)) {
+    const int fresh = names.empty() ? 1 : names.rbegin()->first + 1;
+    names[fresh] = "default";
+    std::replace(soup.patches.begin(), soup.patches.end(), 0, fresh);
+  }
+  if (names.size() < 2) {
+    soup.patches.clear();
+    soup.patch_names.clear();
+    read.patches_from.clear();
+    return;
+  }
+  read.renamed_patches = sanitize_names(names);
+  soup.patch_names = std::move(names);
+}
+
 TriangleSoup parse_with(detail::SoupReader reader, const std::string& path, std::string_view data,
                         ReadReport* report) {
   if (data.empty()) detail::fail(path, "empty file");
@@ -28,6 +58,7 @@ TriangleSoup parse_with(detail::SoupReader reader, const std::string& path, std:
   if (soup.triangles.empty()) detail::fail(path, "no faces");
   detail::check_extent(path, soup.points);
   read.triangles = soup.triangles.size();
+  settle_patches(soup, read);
   if (report) *report = read;
   return soup;
 }

@@ -86,7 +86,8 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
   for (std::size_t line_number = 1;; ++line_number) {
     const std::size_t newline = data.find('\n', offset);
     if (newline == std::string_view::npos) fail(path, "truncated header (no end_header line)");
-    const std::vector<std::string_view> words = split_words(data.substr(offset, newline - offset));
+    const std::string_view line = data.substr(offset, newline - offset);
+    const std::vector<std::string_view> words = split_words(line);
     offset = newline + 1;
     const auto fail_here = [&](const std::string& problem) { fail(path, at_line(line_number) + problem); };
     const std::string_view keyword = words.empty() ? std::string_view() : words[0];
@@ -129,7 +130,12 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
       header.data_offset = offset;
       header.data_line = line_number + 1;
       return header;
-    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+    } else if (keyword == "comment") {
+      std::string_view text = line.substr(line.find("comment") + 7);
+      while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+      while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
+      header.comments.emplace_back(text);
+    } else if (keyword != "obj_info" && !keyword.empty()) {
       fail_here("unknown header keyword " + quoted(keyword));
     }
   }

@@ -37,6 +37,7 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   std::size_t data_offset = 0;  ///< first byte after "end_header\n"
   std::size_t data_line = 0;    ///< number of the line that starts at data_offset
+  std::vector<std::string> comments;  ///< the text after each `comment` keyword, in order
 };
 
 /// Bytes of a binary value of `type`.

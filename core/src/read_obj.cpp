@@ -1,5 +1,7 @@
-// Wavefront OBJ reader: `v` and `f` records; texture, normal, grouping and material records are
-// skipped; free-form geometry is rejected rather than lost. `#` starts a comment.
+// Wavefront OBJ reader: `v` and `f` records, and `g` / `o` groups as patches (a face belongs to
+// the group named last; of several names on a `g` line, the first); texture, normal, smoothing
+// and material records are skipped; free-form geometry is rejected rather than lost. `#` starts
+// a comment.
 #include "readers.h"
 #include "text_scanner.h"
 
@@ -11,9 +13,9 @@ namespace {
 
 // Records that carry no surface geometry.
 bool is_ignored_record(std::string_view keyword) {
-  static constexpr std::array<std::string_view, 18> ignored = {
-      "vt", "vn",  "vp",    "g",        "o",        "s",          "usemtl",    "mtllib", "l",
-      "p",  "lod", "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj", "maplib", "usemap"};
+  static constexpr std::array<std::string_view, 16> ignored = {
+      "vt", "vn", "vp", "s", "usemtl", "mtllib", "l", "p", "lod", "bevel", "c_interp", "d_interp", "shadow_obj",
+      "trace_obj", "maplib", "usemap"};
   return std::find(ignored.begin(), ignored.end(), keyword) != ignored.end();
 }
 
@@ -40,6 +42,8 @@ TriangleSoup read_obj(const std::string& path, std::string_view data, ReadReport
 
   TriangleSoup soup;
   std::vector<std::uint32_t> corners;
+  GroupTags groups;
+  int group = 0;  // none named yet
   while (in.seek_token()) {
     const std::string_view keyword = in.token();
     if (keyword == "v") {
@@ -73,7 +77,12 @@ TriangleSoup read_obj(const std::string& path, std::string_view data, ReadReport
         corners.push_back(static_cast<std::uint32_t>(resolved));
       }
       if (corners.size() < 3) fail_here("face has " + std::to_string(corners.size()) + " corners (at least 3 needed)");
-      add_polygon(soup, corners, report);
+      add_polygon(soup, corners, report, group);
+    } else if (keyword == "g" || keyword == "o") {
+      const std::string_view name = in.token();
+      group = groups.tag(soup, name.empty() ? "default" : std::string(name));
+      report.patches_from = "obj groups";
+      in.skip_line();
     } else if (is_ignored_record(keyword)) {
       in.skip_line();
     } else {

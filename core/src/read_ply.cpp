@@ -1,16 +1,23 @@
 // PLY reader: ASCII, binary little and big endian. The header's elements and properties drive
 // the parse: every property of every element is read (or skipped) in order, so unknown
-// properties and elements cost nothing but cannot shift the data.
+// properties and elements cost nothing but cannot shift the data. A scalar integer face property
+// `patch`, `label` or `tag` (the first of these the header declares) gives each face its patch;
+// `comment patch <value> <name>` lines name them (what write_soup writes).
 #include "byte_order.h"
 #include "ply_header.h"
 #include "readers.h"
 #include "text_scanner.h"
 
+#include <algorithm>
 #include <limits>
+#include <map>
 #include <optional>
 
 namespace meshprep::detail {
 namespace {
+
+// Tags stay far from int's end, so that a fresh tag after the largest still fits.
+constexpr std::int64_t kLargestTag = std::int64_t{1} << 30;
 
 // Thrown by a source that runs out of data; read_ply turns it into a "truncated" message.
 struct OutOfData {};
@@ -151,6 +158,7 @@ class PlyDataReader {
       }
     }
     if (!source.at_end()) fail(path_, source.where() + "unexpected data after the last element");
+    name_patches();
     return std::move(soup_);
   }
 
@@ -180,6 +188,42 @@ class PlyDataReader {
       fail(path_, "the 'face' vertex indices are not of an integer type");
     }
     corners_ = *index;
+    for (const char* label : {"patch", "label", "tag"}) {
+      const std::optional<std::size_t> found = find_property(*face_, label);
+      if (!found || face_->properties[*found].is_list || !is_integral(face_->properties[*found].type)) continue;
+      patch_property_ = *found;
+      report_.patches_from = std::string("ply face property '") + label + "'";
+      break;
+    }
+  }
+
+  // The file's label values made tags >= 1 (shifted up when the file counts from 0 or below),
+  // named by the header's `comment patch <value> <name>` lines, else "patch_<value>".
+  void name_patches() {
+    if (!patch_property_ || labels_.empty()) return;
+    const auto [low, high] = std::minmax_element(labels_.begin(), labels_.end());
+    const std::int64_t shift = *low < 1 ? 1 - *low : 0;
+    if (*high + shift > kLargestTag)
+      fail(path_, "face " + report_.patches_from.substr(4) + " spans " + std::to_string(*low) + " to " +
+                      std::to_string(*high) + ", more tags than a mesh can hold");
+    std::map<std::int64_t, std::string> named;
+    for (const std::string& comment : header_.comments) {
+      TextScanner words(comment);
+      std::int64_t value = 0;
+      if (words.token() != "patch" || !parse_int(words.token(), value)) continue;
+      const std::string_view name = words.rest_of_line();
+      if (!name.empty()) named[value] = std::string(name);
+    }
+    soup_.patches.resize(soup_.triangles.size());
+    std::size_t triangle = 0;
+    for (std::size_t face = 0; face < labels_.size(); ++face) {
+      const int tag = static_cast<int>(labels_[face] + shift);
+      for (std::size_t t = 0; t < triangles_of_face_[face]; ++t) soup_.patches[triangle++] = tag;
+      if (!soup_.patch_names.count(tag)) {
+        const auto name = named.find(labels_[face]);
+        soup_.patch_names[tag] = name != named.end() ? name->second : "patch_" + std::to_string(labels_[face]);
+      }
+    }
   }
 
   // The fewest bytes an instance of `element` can take (binary size, or a digit and a separator per value).
@@ -209,6 +253,8 @@ class PlyDataReader {
         const int axis = &element == vertex_ ? axis_of(k) : -1;
         if (axis >= 0) {
           p[axis] = source.real(property.type);
+        } else if (&element == face_ && patch_property_ == k) {
+          labels_.push_back(source.integer(property.type));
         } else {
           source.skip(property.type);
         }
@@ -253,6 +299,7 @@ class PlyDataReader {
       corners_of_face_.push_back(static_cast<std::uint32_t>(index));
     }
     add_polygon(soup_, corners_of_face_, report_);
+    if (patch_property_) triangles_of_face_.push_back(static_cast<std::uint32_t>(corners_of_face_.size() - 2));
   }
 
   const std::string& path_;
@@ -263,6 +310,9 @@ class PlyDataReader {
   std::size_t xyz_[3] = {0, 0, 0};
   std::size_t corners_ = 0;
   std::vector<std::uint32_t> corners_of_face_;
+  std::optional<std::size_t> patch_property_;  // of the face element
+  std::vector<std::int64_t> labels_;             // its value per face
+  std::vector<std::uint32_t> triangles_of_face_;  // per face, the triangles it became
   TriangleSoup soup_;
 };
 

@@ -1,7 +1,8 @@
 // STL reader, ASCII and binary. A file is binary when its size is exactly 84 + 50 n bytes for the
 // triangle count n stored at byte 80, even if its header starts with "solid" (many exporters
 // write such headers); otherwise it must be ASCII text. STL stores each corner separately: corners with
-// exactly equal coordinates become one soup vertex.
+// exactly equal coordinates become one soup vertex. The solids of an ASCII file are its patches,
+// named by their `solid` lines ("solid_<k>" for a solid without a name).
 #include "byte_order.h"
 #include "readers.h"
 #include "text_scanner.h"
@@ -111,16 +112,23 @@ TriangleSoup read_ascii(const std::string& path, std::string_view data, ReadRepo
   TriangleSoup soup;
   CornerMerger merger(soup, data.size() / 500);  // ~250 bytes per facet, half a vertex per facet
   std::vector<std::uint32_t> corners(3);
-  expect("solid");
-  in.skip_line();  // the solid's name
+  GroupTags solids;
+  int solid = 0, solids_met = 0;
+  const auto start_solid = [&] {
+    expect("solid");
+    const std::string_view name = in.rest_of_line();
+    ++solids_met;
+    solid = solids.tag(soup, name.empty() ? "solid_" + std::to_string(solids_met) : std::string(name));
+  };
+  start_solid();
   for (;;) {
     if (!in.seek_token()) fail(path, "truncated: no 'endsolid'");
     const std::string_view keyword = in.token();
     if (equals_ignoring_case(keyword, "endsolid")) {
       in.skip_line();
       if (!in.seek_token()) break;
-      expect("solid");  // several solids in one file
-      in.skip_line();
+      start_solid();  // several solids in one file
+      report.patches_from = "stl solids";
       continue;
     }
     if (!equals_ignoring_case(keyword, "facet")) fail_here("expected 'facet' or 'endsolid', found " + quoted(keyword));
@@ -140,7 +148,7 @@ TriangleSoup read_ascii(const std::string& path, std::string_view data, ReadRepo
     }
     expect("endloop");
     expect("endfacet");
-    add_polygon(soup, corners, report);
+    add_polygon(soup, corners, report, solid);
   }
   return soup;
 }

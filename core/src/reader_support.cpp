@@ -65,12 +65,22 @@ std::size_t capped_count(std::uint64_t announced, std::size_t bytes, std::size_t
   return static_cast<std::size_t>(std::min<std::uint64_t>(announced, bytes / std::max<std::size_t>(min_bytes_each, 1)));
 }
 
-void add_polygon(TriangleSoup& soup, const std::vector<std::uint32_t>& corners, ReadReport& report) {
+void add_polygon(TriangleSoup& soup, const std::vector<std::uint32_t>& corners, ReadReport& report, int patch) {
   ++report.faces_in_file;
   if (corners.size() > 3) ++report.polygons_triangulated;
   for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
     soup.triangles.push_back({corners[0], corners[i], corners[i + 1]});
   }
+  if (patch != 0 || !soup.patches.empty()) {
+    soup.patches.resize(soup.triangles.size() - (corners.size() - 2), 0);
+    soup.patches.resize(soup.triangles.size(), patch);
+  }
+}
+
+int GroupTags::tag(TriangleSoup& soup, const std::string& name) {
+  const auto [it, added] = tag_of_.try_emplace(name, static_cast<int>(tag_of_.size()) + 1);
+  if (added) soup.patch_names[it->second] = name;
+  return it->second;
 }
 
 }  // namespace meshprep::detail

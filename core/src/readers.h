@@ -3,6 +3,7 @@
 /// The per-format soup readers behind read_soup, and the helpers they share.
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,7 +54,19 @@ void check_extent(const std::string& path, const std::vector<Vec3>& points);
 std::size_t capped_count(std::uint64_t announced, std::size_t bytes, std::size_t min_bytes_each);
 
 /// Appends a polygon (at least 3 valid corners) to the soup, fan-triangulated around its first
-/// corner, and counts it in report.faces_in_file and report.polygons_triangulated.
-void add_polygon(TriangleSoup& soup, const std::vector<std::uint32_t>& corners, ReadReport& report);
+/// corner, and counts it in report.faces_in_file and report.polygons_triangulated. A `patch` other
+/// than 0 is given to its triangles (soup.patches is kept empty until a face has one, then 0 marks
+/// the faces without; parse_soup settles those, see io.h).
+void add_polygon(TriangleSoup& soup, const std::vector<std::uint32_t>& corners, ReadReport& report, int patch = 0);
+
+/// The tags of a file's named groups: a new tag, 1, 2, ..., the first time a name is met, its name
+/// stored in soup.patch_names.
+class GroupTags {
+ public:
+  int tag(TriangleSoup& soup, const std::string& name);
+
+ private:
+  std::map<std::string, int> tag_of_;
+};
 
 }  // namespace meshprep::detail

@@ -52,6 +52,15 @@ void TextScanner::skip_line() {
   pos_ = newline ? static_cast<const char*>(newline) : end_;
 }
 
+std::string_view TextScanner::rest_of_line() {
+  while (pos_ != end_ && is_blank(*pos_)) ++pos_;
+  const char* start = pos_;
+  skip_line();
+  const char* stop = pos_;
+  while (stop != start && is_blank(stop[-1])) --stop;
+  return {start, static_cast<std::size_t>(stop - start)};
+}
+
 bool TextScanner::next_line() {
   skip_line();
   if (pos_ == end_) return false;

@@ -26,6 +26,9 @@ class TextScanner {
   bool at_line_end();
   /// Discards the rest of the current line.
   void skip_line();
+  /// The rest of the current line without its leading and trailing blanks (a name that may hold
+  /// spaces); the scanner moves to the line's end. A comment character is not special here.
+  std::string_view rest_of_line();
   /// Discards the rest of the current line and its line end: the scanner is at the first byte of
   /// the next line (where a binary block starts). False if the text ends on this line.
   bool next_line();

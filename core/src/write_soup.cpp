@@ -1,6 +1,8 @@
 // Soup writers: OFF, OBJ, PLY (ASCII or binary little endian, double coordinates and per-vertex
 // scalars) and STL (ASCII or binary float32 with facet normals). Text numbers are written with
-// std::to_chars, the shortest text that reads back to the identical double.
+// std::to_chars, the shortest text that reads back to the identical double. Patches: OBJ `g`
+// groups, a PLY face property `patch` with `comment patch <tag> <name>` lines, one ASCII STL
+// solid per patch (in tag order); OFF and binary STL have no place for them.
 #include "meshprep/core/io.h"
 
 #include "meshprep/core/atomic_file.h"
@@ -9,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -61,6 +64,14 @@ class OutputBuffer {
   std::string buffer_;
 };
 
+// The tags of soup.patches, ascending.
+std::vector<int> distinct_patches(const TriangleSoup& soup) {
+  std::vector<int> tags = soup.patches;
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  return tags;
+}
+
 void write_point(OutputBuffer& out, const Vec3& p) { out << p.x() << " " << p.y() << " " << p.z(); }
 
 Vec3 unit_normal(const TriangleSoup& soup, const Triangle& t) {
@@ -84,14 +95,25 @@ void write_obj(const TriangleSoup& soup, OutputBuffer& out) {
     write_point(out, p);
     out << "\n";
   }
-  for (const Triangle& t : soup.triangles) out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    if (!soup.patches.empty() && (f == 0 || soup.patches[f] != soup.patches[f - 1]))
+      out << "g " << tag_name(soup.patch_names, soup.patches[f], "patch") << "\n";
+    const Triangle& t = soup.triangles[f];
+    out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+  }
 }
 
 void write_ply(const TriangleSoup& soup, const std::vector<VertexScalar>& scalars, OutputBuffer& out, bool binary) {
-  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment written by meshprep\n"
-      << "element vertex " << soup.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n";
+  const bool patches = !soup.patches.empty();
+  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment written by meshprep\n";
+  if (patches)
+    for (const int tag : distinct_patches(soup))
+      out << "comment patch " << static_cast<std::size_t>(tag) << " " << tag_name(soup.patch_names, tag, "patch") << "\n";
+  out << "element vertex " << soup.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n";
   for (const VertexScalar& scalar : scalars) out << "property double " << scalar.name << "\n";
-  out << "element face " << soup.triangles.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
+  out << "element face " << soup.triangles.size() << "\nproperty list uchar uint vertex_indices\n";
+  if (patches) out << "property int patch\n";
+  out << "end_header\n";
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Vec3& p = soup.points[i];
     if (binary) {
@@ -103,30 +125,46 @@ void write_ply(const TriangleSoup& soup, const std::vector<VertexScalar>& scalar
       out << "\n";
     }
   }
-  for (const Triangle& t : soup.triangles) {
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const Triangle& t = soup.triangles[f];
     if (binary) {
       out.binary(std::uint8_t{3});
       for (const std::uint32_t index : t) out.binary(index);
+      if (patches) out.binary(static_cast<std::int32_t>(soup.patches[f]));
     } else {
-      out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+      out << "3 " << t[0] << " " << t[1] << " " << t[2];
+      if (patches) out << " " << static_cast<std::size_t>(soup.patches[f]);
+      out << "\n";
     }
   }
 }
 
-void write_stl_ascii(const TriangleSoup& soup, OutputBuffer& out) {
-  out << "solid meshprep\n";
-  for (const Triangle& t : soup.triangles) {
-    out << "  facet normal ";
-    write_point(out, unit_normal(soup, t));
-    out << "\n    outer loop\n";
-    for (const std::uint32_t index : t) {
-      out << "      vertex ";
-      write_point(out, soup.points[index]);
-      out << "\n";
-    }
-    out << "    endloop\n  endfacet\n";
+void write_stl_facet(const TriangleSoup& soup, const Triangle& t, OutputBuffer& out) {
+  out << "  facet normal ";
+  write_point(out, unit_normal(soup, t));
+  out << "\n    outer loop\n";
+  for (const std::uint32_t index : t) {
+    out << "      vertex ";
+    write_point(out, soup.points[index]);
+    out << "\n";
   }
-  out << "endsolid meshprep\n";
+  out << "    endloop\n  endfacet\n";
+}
+
+void write_stl_ascii(const TriangleSoup& soup, OutputBuffer& out) {
+  if (soup.patches.empty()) {
+    out << "solid meshprep\n";
+    for (const Triangle& t : soup.triangles) write_stl_facet(soup, t, out);
+    out << "endsolid meshprep\n";
+    return;
+  }
+  for (const int tag : distinct_patches(soup)) {
+    const std::string name = tag_name(soup.patch_names, tag, "patch");
+    out << "solid " << name << "\n";
+    for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+      if (soup.patches[f] == tag) write_stl_facet(soup, soup.triangles[f], out);
+    out << "endsolid " << name << "\n";
+  }
 }
 
 void write_stl_binary(const TriangleSoup& soup, OutputBuffer& out) {
@@ -164,6 +202,14 @@ void check_writable(const TriangleSoup& soup, const std::string& path) {
   if (soup.triangles.size() > std::numeric_limits<std::uint32_t>::max()) {
     detail::fail(path, "too many triangles for the file format");
   }
+  if (!soup.patches.empty() && soup.patches.size() != soup.triangles.size())
+    detail::fail(path, "cannot write " + std::to_string(soup.patches.size()) + " patches for " +
+                           std::to_string(soup.triangles.size()) + " triangles");
+  for (const int tag : soup.patches)
+    if (tag < 1) detail::fail(path, "cannot write patch " + std::to_string(tag) + " (a patch is >= 1)");
+  for (const auto& [tag, name] : soup.patch_names)
+    if (!is_valid_name(name))
+      detail::fail(path, "cannot write the patch name '" + name + "': " + kNameRule);
 }
 
 // Binary STL holds float32 coordinates: far from the origin (or for tiny features) they cannot

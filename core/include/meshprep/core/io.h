@@ -3,13 +3,19 @@
 /// Reading and writing surface meshes and point sets. The format follows the file extension
 /// (case-insensitive):
 ///
-/// | format | read | write | notes |
-/// | --- | --- | --- | --- |
-/// | .off | yes | yes | polygons are fan-triangulated on read |
-/// | .obj | yes | yes | `v` and `f` records (v, v/t, v/t/n, v//n, negative indices); polygons triangulated |
-/// | .ply | yes | yes | ASCII, binary little and big endian; polygons triangulated; writes per-vertex scalars |
-/// | .stl | yes | yes | ASCII and binary (also binary files whose header starts with "solid"); equal corners merged |
-/// | .xyz | points | no | `x y z` or `x y z nx ny nz` per line, `#` comments |
+/// /// | format | read | write | notes | patches (read and written) |
+/// | --- | --- | --- | --- | --- |
+/// | .off | yes | yes | polygons are fan-triangulated on read | none |
+/// | .obj | yes | yes | `v` and `f` records (v, v/t, v/t/n, v//n, negative indices); polygons triangulated | `g` / `o` groups |
+/// | .ply | yes | yes | ASCII, binary little and big endian; polygons triangulated; writes per-vertex scalars | face property `patch` (read also `label`, `tag`), names in `comment patch <tag> <name>` |
+/// | .stl | yes | yes | ASCII and binary (also binary files whose header starts with "solid"); equal corners merged | ASCII: one `solid <name>` per patch |
+/// | .xyz | points | no | `x y z` or `x y z nx ny nz` per line, `#` comments | |
+///
+/// Patches: a file's groups become the soup's patches (TriangleSoup::patches, tags 1, 2, ... in
+/// the order the file names them) only when they split it into two or more: a single name is the
+/// part's name. Faces before the first group join the patch "default" (OBJ's own default group).
+/// Names are made to follow patch_names.h's rule, each change listed in ReadReport. Writers that
+/// hold no patches (OFF, binary STL) drop them.
 ///
 /// Every reader validates what it reads: NaN/Inf coordinates, out-of-range or negative indices,
 /// truncated files, element counts that do not match the data and empty files are rejected
@@ -18,6 +24,7 @@
 /// interrupted or failed run never leaves a half-written file.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/patch_names.h"
 
 #include <string>
 #include <vector>
@@ -31,6 +38,10 @@ struct ReadReport {
   std::size_t faces_in_file = 0;        ///< polygons in the file
   std::size_t polygons_triangulated = 0;  ///< of those, polygons with more than 3 corners (fan-triangulated)
   std::size_t triangles = 0;            ///< triangles after triangulation (soup.triangles.size())
+  /// Where the soup's patches came from ("obj groups", "stl solids", "ply face property 'label'"),
+  /// or empty when the file names none (or a single one: the part's name, not a patch).
+  std::string patches_from;
+  std::vector<RenamedTag> renamed_patches;  ///< names changed to follow patch_names.h's rule
 };
 
 /// Read a surface mesh as an indexed triangle soup.

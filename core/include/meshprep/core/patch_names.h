@@ -16,6 +16,9 @@
 namespace meshprep {
 
 inline constexpr std::size_t kMaxNameLength = 80;
+/// The rule, for messages.
+inline constexpr const char* kNameRule =
+    "a patch name is ASCII letters, digits and '_', starts with a letter and has at most 80 characters";
 
 /// Whether `name` follows the rule (distinctness aside).
 bool is_valid_name(std::string_view name);
