@@ -16,16 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class FuzzRegression : public test::ScratchDirTest {
- protected:
-
-  // Writes `bytes` to the file `name` in the test's folder and returns its path.
-  std::string file(const std::string& name, const std::string& bytes) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
-};
+using FuzzRegression = test::ScratchDirTest;
 
 // The message of the InvalidInput that reading the configuration file `path` throws ("" if none).
 std::string config_error(const std::string& path) {

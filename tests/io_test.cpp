@@ -28,13 +28,6 @@ namespace fs = std::filesystem;
 class IoTest : public test::ScratchDirTest {
  protected:
 
-  // Writes `content` (text or bytes) to a file in the test directory and returns its path.
-  std::string file(const std::string& name, const std::string& content) const {
-    std::ofstream out(path(name), std::ios::binary);
-    out << content;
-    return path(name);
-  }
-
   std::vector<std::string> directory_entries() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());

@@ -14,14 +14,7 @@
 namespace meshprep {
 namespace {
 
-class PatchIo : public test::ScratchDirTest {
- protected:
-  std::string file(const std::string& name, const std::string& content) const {
-    std::ofstream out(path(name), std::ios::binary);
-    out << content;
-    return path(name);
-  }
-};
+using PatchIo = test::ScratchDirTest;
 
 // Faces per patch name.
 std::map<std::string, std::size_t> faces_by_name(const TriangleSoup& soup) {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace meshprep::test {
@@ -27,6 +28,13 @@ class ScratchDirTest : public ::testing::Test {
 
   /// The path of `name` in the test's folder.
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  /// Writes `content` (text or bytes) to `name` in the test's folder and returns its path.
+  std::string file(const std::string& name, const std::string& content) const {
+    std::ofstream out(path(name), std::ios::binary);
+    out << content;
+    return path(name);
+  }
 
   std::filesystem::path dir_;
 };
