@@ -34,10 +34,12 @@ void write_text(const std::string& path, const std::string& content) {
 }
 
 // The cube of cube_tets(2) (two regions, six boundary tags) moved and scaled so that its
-// coordinates need all 17 significant digits.
+// coordinates need all 17 significant digits; one region and two sides are named.
 TetMesh odd_cube() {
   TetMesh mesh = test::cube_tets(2, 1.0 / 3.0);
   for (Vec3& p : mesh.points) p = p * 1.1 + Vec3(0.1, -2.5e-7, 1e5 / 7.0);
+  mesh.region_names = {{1, "core"}};
+  mesh.boundary_names = {{1, "fixed_end"}, {4, "Load"}};
   return mesh;
 }
 
@@ -169,6 +171,7 @@ struct Variant {
   const char* file;
   TetExportOptions options;
   bool stores_boundary;  // the VTK formats store the tets only
+  bool stores_names = false;
 };
 
 class RoundTrip : public FemImportTest, public ::testing::WithParamInterface<Variant> {};
@@ -195,13 +198,20 @@ TEST_P(RoundTrip, ReadsBackWhatWasWritten) {
     EXPECT_EQ(report.untagged_boundary_faces, mesh.boundary_faces.size());
   }
   expect_outward_boundary(read);
+  if (GetParam().stores_names) {
+    // The names the mesh has, and the writer's defaults for the other tags.
+    EXPECT_EQ(read.region_names, (TagNames{{1, "core"}, {2, "region_2"}}));
+    TagNames boundary{{1, "fixed_end"}, {4, "Load"}};
+    for (const int tag : {2, 3, 5, 6}) boundary[tag] = "boundary_" + std::to_string(tag);
+    EXPECT_EQ(read.boundary_names, boundary);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryWriter, RoundTrip,
-                         ::testing::Values(Variant{"v41_ascii.msh", {MshVersion::V41, false}, true},
-                                           Variant{"v41_binary.msh", {MshVersion::V41, true}, true},
-                                           Variant{"v22_ascii.msh", {MshVersion::V22, false}, true},
-                                           Variant{"v22_binary.msh", {MshVersion::V22, true}, true},
+                         ::testing::Values(Variant{"v41_ascii.msh", {MshVersion::V41, false}, true, true},
+                                           Variant{"v41_binary.msh", {MshVersion::V41, true}, true, true},
+                                           Variant{"v22_ascii.msh", {MshVersion::V22, false}, true, true},
+                                           Variant{"v22_binary.msh", {MshVersion::V22, true}, true, true},
                                            Variant{"cube.mesh", {}, true}, Variant{"cube.node", {}, true},
                                            Variant{"cube.vtu", {}, false}, Variant{"cube.vtk", {}, false}),
                          [](const auto& test_info) {
@@ -289,7 +299,8 @@ TEST_F(FemImportTest, ReadsWhatGmshWrites) {
   write_text(path("box.geo"), box_geo);
   // With physical groups Gmsh saves only their elements: the volume as region 5, the side x = 0
   // (surface 1 of the OpenCASCADE box) as tag 3; without, it saves every element with tag 0.
-  write_text(path("tagged.geo"), std::string(box_geo) + "Physical Volume(5) = {1};\nPhysical Surface(3) = {1};\n");
+  write_text(path("tagged.geo"),
+             std::string(box_geo) + "Physical Volume(5) = {1};\nPhysical Surface(\"fixed end\", 3) = {1};\n");
   struct Output {
     const char* file;
     const char* format;
@@ -318,6 +329,9 @@ TEST_F(FemImportTest, ReadsWhatGmshWrites) {
       const bool physical = std::string(geo) == "tagged" && std::string(o.format).rfind("msh", 0) == 0;
       if (!physical) continue;
       EXPECT_TRUE(std::all_of(mesh.tet_regions.begin(), mesh.tet_regions.end(), [](int r) { return r == 5; })) << file;
+      EXPECT_EQ(mesh.boundary_names, (TagNames{{3, "fixed_end"}})) << file;  // the name made to follow the rule
+      ASSERT_EQ(report.renamed_names.size(), 1u) << file;
+      EXPECT_EQ(report.renamed_names[0].from, "fixed end") << file;
       for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
         const Face& face = mesh.boundary_faces[f];
         const bool x0 = std::all_of(face.begin(), face.end(), [&](std::uint32_t v) { return mesh.points[v].x() == 0; });

@@ -4,6 +4,7 @@
 
 #include "exporters.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/core/patch_names.h"
 
 #include <algorithm>
 #include <array>
@@ -89,6 +90,9 @@ void validate(const TetMesh& mesh, const std::string& path) {
     check_indices(path, "boundary face", f, mesh.boundary_faces[f], mesh.points.size());
   check_tags(path, "tet region", mesh.tet_regions);
   check_tags(path, "boundary tag", mesh.boundary_tags);
+  for (const TagNames* names : {&mesh.region_names, &mesh.boundary_names})
+    for (const auto& [tag, name] : *names)
+      if (!is_valid_name(name)) throw InvalidInput(path + ": cannot export the name '" + name + "': " + kNameRule);
 }
 
 }  // namespace

@@ -5,13 +5,15 @@
 // (0,0,1), i.e. positive volume in TetMesh's sense, so tets are written in their own order.
 // Triangles (element type 2) keep their outward orientation.
 //
-// Tags: physical and elementary tags are the region for tets and the boundary tag for triangles.
+// Tags: physical and elementary tags are the region for tets and the boundary tag for triangles;
+// the physical names are the mesh's names of them (region_<r> and boundary_<t> where it has none).
 // In 4.1 there is one discrete volume entity per region and one discrete surface entity per
 // boundary tag (entity tag = physical tag, no bounding entities); in 2.2 each element carries
 // the two tags (physical, elementary). Element tags: tet t is t + 1, boundary face f is T + f + 1.
 #include "exporters.h"
 
 #include "meshprep/core/atomic_file.h"
+#include "meshprep/core/patch_names.h"
 
 #include <cstdint>
 #include <cstring>
@@ -86,8 +88,8 @@ void write_physical_names(std::ostream& out, const TetMesh& mesh) {
   const std::vector<int> surfaces = distinct_tags(mesh.boundary_tags);
   const std::vector<int> volumes = distinct_tags(mesh.tet_regions);
   out << "$PhysicalNames\n" << surfaces.size() + volumes.size() << '\n';
-  for (int tag : surfaces) out << "2 " << tag << " \"boundary_" << tag << "\"\n";
-  for (int region : volumes) out << "3 " << region << " \"region_" << region << "\"\n";
+  for (int tag : surfaces) out << "2 " << tag << " \"" << tag_name(mesh.boundary_names, tag, "boundary") << "\"\n";
+  for (int region : volumes) out << "3 " << region << " \"" << tag_name(mesh.region_names, region, "region") << "\"\n";
   out << "$EndPhysicalNames\n";
 }
 

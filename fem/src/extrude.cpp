@@ -1,6 +1,7 @@
 #include "meshprep/fem/extrude.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/patch_names.h"
 #include "meshprep/quality/height_field.h"
 #include "meshprep/quality/topology.h"
 
@@ -107,9 +108,21 @@ SurfacePlc extrude_to_block(const TriangleSoup& surface, double depth) {
         lowest = std::min(lowest, surface.points[v].dot(up));
       }
   const double base_level = lowest - depth;
-  for (const Triangle& t : surface.triangles) {
-    plc.facets.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
-    plc.tags.push_back(kTopTag);
+  for (const Triangle& t : surface.triangles) plc.facets.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
+  int side_tag = kSideTag, base_tag = kBaseTag;
+  const bool one_patch = std::all_of(surface.patches.begin(), surface.patches.end(),
+                                     [&](int patch) { return patch == surface.patches.front(); });
+  if (one_patch) {
+    plc.tags.assign(plc.facets.size(), kTopTag);
+    plc.tag_names = {{kTopTag, "top"}, {kSideTag, "sides"}, {kBaseTag, "bottom"}};
+  } else {
+    plc.tags = surface.patches;
+    plc.tag_names = surface.patch_names;
+    side_tag = *std::max_element(plc.tags.begin(), plc.tags.end()) + 1;
+    base_tag = side_tag + 1;
+    plc.tag_names[side_tag] = "sides";
+    plc.tag_names[base_tag] = "bottom";
+    sanitize_names(plc.tag_names);  // a patch of the surface already named "sides" or "bottom"
   }
   // Side walls: one vertical quad per border edge (planar: it contains the edge and `up`), on
   // base points right below the border vertices.
@@ -141,13 +154,13 @@ SurfacePlc extrude_to_block(const TriangleSoup& surface, double depth) {
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
     plc.facets.push_back({renumber[b], renumber[a], below_of(a), below_of(b)});
-    plc.tags.push_back(kSideTag);
+    plc.tags.push_back(side_tag);
   }
   for (const auto f : base.faces()) {
     std::vector<std::uint32_t> corners;
     for (const auto v : base.fv_range(f)) corners.push_back(base_index[static_cast<std::size_t>(v.idx())]);
     plc.facets.push_back(corners);
-    plc.tags.push_back(kBaseTag);
+    plc.tags.push_back(base_tag);
   }
   return plc;
 }

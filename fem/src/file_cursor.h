@@ -41,6 +41,8 @@ class FileCursor {
   /// Whether the current line has no token left.
   bool at_line_end() { return in_.at_line_end(); }
   void skip_line() { in_.skip_line(); }
+  /// The rest of the current line, blanks trimmed (a name that may hold spaces).
+  std::string_view rest_of_line() { return in_.rest_of_line(); }
 
   /// The next token as an integer, a count (>= 0) or a real number; `what` names it in messages.
   std::int64_t integer(const char* what) { return integer_of(token(), what); }

@@ -186,6 +186,20 @@ void fail_node_reference(const std::string& name, const std::string& where, cons
                  numbering);
 }
 
+namespace {
+
+// The names of the tags in `tags`, made to follow the naming rule (changes reported).
+void keep_names(const TagNames& file_names, const std::vector<int>& tags, TagNames& kept, TetReadReport& read) {
+  if (file_names.empty()) return;
+  for (const int tag : tags)
+    if (!kept.count(tag))
+      if (const auto name = file_names.find(tag); name != file_names.end()) kept.insert(*name);
+  const std::vector<RenamedTag> renamed = sanitize_names(kept);
+  read.renamed_names.insert(read.renamed_names.end(), renamed.begin(), renamed.end());
+}
+
+}  // namespace
+
 TetMesh assemble_tet_mesh(TetFileContent content, const std::string& name, TetReadReport* report) {
   if (content.tets.empty()) {
     fail(name, "no tetrahedra" +
@@ -217,6 +231,8 @@ TetMesh assemble_tet_mesh(TetFileContent content, const std::string& name, TetRe
   const TetFaces faces(mesh.tets);
   check_face_groups(faces, mesh.tets, name);
   collect_boundary(mesh, content, faces, name, read);
+  keep_names(content.region_names, mesh.tet_regions, mesh.region_names, read);
+  keep_names(content.triangle_names, mesh.boundary_tags, mesh.boundary_names, read);
   if (report) *report = std::move(read);
   return mesh;
 }

@@ -187,6 +187,8 @@ class GmshReader {
         elements_read_ = true;
       } else if (section == "$Entities" && version_ == Version::V41) {
         read_entities_41();
+      } else if (section == "$PhysicalNames") {
+        read_physical_names();
       } else if (section == "$PartitionedEntities") {
         in_.fail_here("partitioned meshes are not supported (save the mesh unpartitioned)");
       } else {
@@ -229,6 +231,21 @@ class GmshReader {
         in_.fail_here("the int after the binary header is not 1 in either byte order");
     }
     msh_.expect_end("$MeshFormat");
+  }
+
+  // ---- $PhysicalNames (text in ASCII and binary files): lines `dimension tag "name"` ----
+  void read_physical_names() {
+    const std::uint64_t count = in_.count("number of physical names");
+    for (std::uint64_t i = 0; i < count; ++i) {
+      const std::int64_t dimension = in_.integer("physical dimension");
+      const int tag = tag_from_file(name_, in_.where(), "physical tag", in_.integer("physical tag"));
+      std::string_view quoted_name = in_.rest_of_line();
+      if (quoted_name.size() < 2 || quoted_name.front() != '"' || quoted_name.back() != '"')
+        in_.fail_here("a physical name is written in double quotes, found " + quoted(quoted_name));
+      const std::string physical_name(quoted_name.substr(1, quoted_name.size() - 2));
+      if (dimension == 2) content_.triangle_names[tag] = physical_name;
+      if (dimension == 3) content_.region_names[tag] = physical_name;
+    }
   }
 
   // ---- $Entities (4.1): the first physical tag of each surface and volume ----

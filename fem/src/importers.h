@@ -26,6 +26,7 @@ struct TetFileContent {
   std::vector<Triangle> triangles; ///< indices < points.size()
   std::vector<int> triangle_tags;  ///< one per triangle, as in the file (0 = none)
   std::size_t elements_ignored = 0;
+  TagNames region_names, triangle_names;  ///< names the file gives its tags (Gmsh physical names)
   std::string points_file;  ///< names the points in messages when they are in another file (TetGen's .node)
 };
 

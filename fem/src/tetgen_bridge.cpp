@@ -254,7 +254,9 @@ SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
     plc.points.push_back(surface.points[v]);
   }
   for (const Triangle& t : surface.triangles) plc.facets.push_back({index[t[0]], index[t[1]], index[t[2]]});
-  plc.tags.assign(plc.facets.size(), tag);
+  if (surface.patches.empty()) plc.tags.assign(plc.facets.size(), tag);
+  else plc.tags = surface.patches;
+  plc.tag_names = surface.patch_names;
   plc.holes = void_points(surface);
   return plc;
 }
@@ -295,6 +297,7 @@ TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
   }
   TetMesh mesh = deserialise(in);
   for (Vec3& p : mesh.points) p += shift;
+  mesh.boundary_names = surface.tag_names;
   if (mesh.tets.empty())
     throw TetgenError(0, "TetGen produced no tetrahedra: the surface does not enclose a volume (holes let the "
                          "exterior removal leak in)");

@@ -394,6 +394,8 @@ TetMesh TetComplex::to_mesh(const TetMesh& original) const {
   if (any_removed_)
     for (Triangle& f : mesh.boundary_faces) f = {index[f[0]], index[f[1]], index[f[2]]};
   mesh.boundary_tags = original.boundary_tags;
+  mesh.boundary_names = original.boundary_names;
+  mesh.region_names = original.region_names;
   return mesh;
 }
 

@@ -5,7 +5,7 @@
 ///
 /// | extension | format | tags |
 /// | --- | --- | --- |
-/// | .msh | Gmsh 4.1 (default) or 2.2, ASCII or binary | physical groups `region_<r>` (3D), `boundary_<t>` (2D) |
+/// | .msh | Gmsh 4.1 (default) or 2.2, ASCII or binary | physical groups named by region_names and boundary_names (`region_<r>`, `boundary_<t>` where a tag has no name) |
 /// | .vtu | VTK XML unstructured grid (ASCII), tets only | cell data `region` (Int32) |
 /// | .vtk | VTK legacy unstructured grid (ASCII 3.0), tets only | cell data `region` |
 /// | .mesh | Medit (INRIA), MeshVersionFormatted 2 | references on tetrahedra (region) and triangles (tag) |
@@ -34,7 +34,8 @@ struct TetExportOptions {
 /// Write `mesh` to `path` (format from the extension).
 /// \throws InvalidInput for an unknown extension (the message lists the supported ones), or a
 ///         malformed mesh (no tets, per-element arrays of the wrong size, an index out of range or
-///         repeated within an element, a region or tag < 1, a non-finite coordinate; for .inp also
+///         repeated within an element, a region or tag < 1, a name against patch_names.h's rule,
+///         a non-finite coordinate; for .inp also
 ///         a boundary face that is not an outward face of any tet);
 ///         IoError if a file cannot be written (nothing is left behind).
 void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {});

@@ -8,7 +8,8 @@
 
 namespace meshprep {
 
-/// Boundary tags of the extruded block.
+/// Boundary tags of the extruded block, named "top", "sides" and "bottom". A surface that has two
+/// patches or more keeps them on top; the sides and the bottom then take the next two tags.
 enum ExtrudedTag : int { kTopTag = 1, kSideTag = 2, kBaseTag = 3 };
 
 /// Up is the coordinate axis nearest to the surface's area-weighted mean normal (so that the base

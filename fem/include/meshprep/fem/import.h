@@ -11,6 +11,10 @@
 /// | .mesh | Medit ASCII, MeshVersionFormatted 1-4 | Tetrahedra, Triangles | reference | reference |
 /// | .node, .ele | TetGen .node + .ele (+ .face if present), 0- or 1-based | tets | first .ele attribute | .face marker |
 ///
+/// Names: Gmsh physical names of surfaces and volumes become TetMesh::boundary_names and
+/// region_names (of the tags the mesh has; names of points and lines are skipped), made to follow
+/// patch_names.h's rule (each change in TetReadReport::renamed_names).
+///
 /// VTK region arrays: the first cell-data array named `region`, `gmsh:physical`, `CellEntityIds`,
 /// `medit:ref` or `tetgen:ref` (one component).
 ///
@@ -40,6 +44,7 @@
 /// faces and tags (bit for bit; the VTK formats store no boundary faces, so those read back
 /// computed, with tag 1).
 
+#include "meshprep/core/patch_names.h"
 #include "meshprep/fem/tet_mesh.h"
 
 #include <string>
@@ -56,6 +61,7 @@ struct TetReadReport {
   std::size_t untagged_boundary_faces = 0;  ///< boundary faces the file does not list (tag 1)
   std::size_t tets_reoriented = 0;       ///< tets with negative volume, corners 2 and 3 swapped
   std::size_t elements_ignored = 0;      ///< points, lines, quadrilaterals, ... skipped
+  std::vector<RenamedTag> renamed_names;  ///< region and boundary names changed to follow patch_names.h's rule
 };
 
 /// Read a tetrahedral mesh (format from the extension; for TetGen either the .node or the .ele,

@@ -29,6 +29,7 @@ struct SurfacePlc {
   std::vector<Vec3> points;
   std::vector<std::vector<std::uint32_t>> facets;  ///< each a planar polygon, 3 or more corners
   std::vector<int> tags;                           ///< one per facet, >= 1
+  TagNames tag_names;  ///< the names of the tags (the surface's patches), given to the tets' boundary
   /// A point inside each void (TetGen's hole list): the region around it gets no tets.
   std::vector<Vec3> holes;
 };
@@ -58,7 +59,8 @@ TetMesh tetrahedralize_plc(const SurfacePlc& plc, const TetParams& params);
 /// \throws InvalidInput for params out of range (check_tet_params).
 std::string tetgen_switches(const TetParams& params, double enclosed_volume);
 
-/// The PLC of a closed triangle surface, every facet tagged `tag`. Points no face uses are left
+/// The PLC of a closed triangle surface, each facet tagged with its face's patch (and the patches'
+/// names), or with `tag` when the surface has no patches. Points no face uses are left
 /// out (TetGen would make those inside the volume tet vertices and drop the others); the others
 /// keep their order. A closed component enclosing negative volume faces inwards: the wall of a
 /// void (repair's keep_cavities), which gets a hole point just inside it.
