@@ -49,6 +49,31 @@ void set_face_patch(TriMesh& mesh, TriMesh::FaceHandle f, int patch) {
   mesh.property(handle, f) = patch;
 }
 
+void inherit_split_patches(TriMesh& mesh, TriMesh::VertexHandle m, TriMesh::VertexHandle a, TriMesh::VertexHandle b) {
+  const OpenMesh::FPropHandleT<int> handle = patch_property(mesh);
+  if (!handle.is_valid()) return;
+  for (const auto out : mesh.voh_range(m)) {
+    const TriMesh::VertexHandle corner = mesh.to_vertex_handle(out);
+    if (corner == a || corner == b || mesh.is_boundary(mesh.edge_handle(out))) continue;
+    // The two faces across m-corner are the halves of one face: one kept its patch.
+    const TriMesh::FaceHandle f = mesh.face_handle(out), g = mesh.opposite_face_handle(out);
+    int& pf = mesh.property(handle, f);
+    int& pg = mesh.property(handle, g);
+    if (pf == 0) pf = pg;
+    if (pg == 0) pg = pf;
+  }
+}
+
+bool on_patch_border(const FacePatches& patches, const TriMesh& mesh, TriMesh::VertexHandle v) {
+  if (!patches.present()) return false;
+  int first = 0;
+  for (const auto f : mesh.vf_range(v)) {
+    if (first == 0) first = patches.of(f);
+    else if (patches.of(f) != first) return true;
+  }
+  return false;
+}
+
 TagNames patch_names(const TriMesh& mesh) {
   OpenMesh::MPropHandleT<TagNames> names_handle;
   if (!mesh.get_property_handle(names_handle, kNamesProperty)) return {};

@@ -1,11 +1,14 @@
 #include "enhance/surface_constraints.h"
 
-#include "shared/edge_lengths.h"
+#include "shared/creases.h"
 #include "shared/triangle_angles.h"
 
+#include "meshprep/core/mesh_patches.h"
 #include "meshprep/core/union_find.h"
+#include "meshprep/quality/face_edges.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 
 namespace meshprep::detail {
@@ -14,7 +17,6 @@ namespace {
 using VertexHandle = TriMesh::VertexHandle;
 using EdgeHandle = TriMesh::EdgeHandle;
 
-const double kStraightCosine = std::cos(150.0 * M_PI / 180.0);  // a run turns by less than 30 degrees
 // A vertex whose two feature edges turn by more than 60 degrees (midway between going straight
 // on and a right angle) is a corner of the part: it stays. Sliding it along either edge would cut
 // the other one's end off (fandisk: 3e-3 of the diagonal at a box corner). The femur's noise
@@ -26,82 +28,8 @@ const double kCornerCosine = std::cos(120.0 * M_PI / 180.0);
 // vertex sliding past such a kink cut it by 1.07e-3 of the diagonal (example007, 47 degrees),
 // above the 1e-3 goal. 33 is no regular polygon's turn (360 / n), where round-off would decide.
 const double kRemeshCornerCosine = std::cos((180.0 - 33.0) * M_PI / 180.0);
-constexpr double kShortestCrease = 5;                             // median edge lengths
 
 Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
-
-bool sharp(const TriMesh& mesh, EdgeHandle e, double cos_feature) {
-  const Vec3 n0 = to_eigen(mesh.calc_face_normal(mesh.face_handle(mesh.halfedge_handle(e, 0))));
-  const Vec3 n1 = to_eigen(mesh.calc_face_normal(mesh.face_handle(mesh.halfedge_handle(e, 1))));
-  const double norms = n0.norm() * n1.norm();
-  return norms > 0 && n0.dot(n1) < cos_feature * norms;
-}
-
-VertexHandle other_end(const TriMesh& mesh, EdgeHandle e, VertexHandle v) {
-  const VertexHandle a = mesh.to_vertex_handle(mesh.halfedge_handle(e, 0));
-  return a == v ? mesh.to_vertex_handle(mesh.halfedge_handle(e, 1)) : a;
-}
-
-// The feature edges of each vertex.
-std::vector<std::vector<EdgeHandle>> incident(const TriMesh& mesh, const std::vector<char>& feature) {
-  std::vector<std::vector<EdgeHandle>> edges(mesh.n_vertices());
-  for (const auto e : mesh.edges())
-    if (feature[static_cast<std::size_t>(e.idx())])
-      for (int i : {0, 1}) edges[static_cast<std::size_t>(mesh.to_vertex_handle(mesh.halfedge_handle(e, i)).idx())].push_back(e);
-  return edges;
-}
-
-// A vertex where a run of sharp edges goes straight on: exactly two of them, nearly opposite.
-// (`cosine`: of the smallest angle between the two edges that still counts as straight on.)
-bool straight_through(const TriMesh& mesh, VertexHandle v, const std::vector<EdgeHandle>& edges,
-                      double cosine = kStraightCosine) {
-  if (edges.size() != 2) return false;
-  const Vec3 x = point(mesh, v);
-  const Vec3 a = point(mesh, other_end(mesh, edges[0], v)) - x, b = point(mesh, other_end(mesh, edges[1], v)) - x;
-  return a.dot(b) <= cosine * a.norm() * b.norm();
-}
-
-// Whether face f has a neighbour in its plane (within kCoplanarCosine) across one of its edges.
-bool has_coplanar_neighbour(const TriMesh& mesh, TriMesh::FaceHandle f) {
-  const Vec3 n = to_eigen(mesh.calc_face_normal(f));
-  for (const auto h : mesh.fh_range(f)) {
-    const auto g = mesh.opposite_face_handle(h);
-    if (g.is_valid() && n.dot(to_eigen(mesh.calc_face_normal(g))) > kCoplanarCosine) return true;
-  }
-  return false;
-}
-
-// Sharp interior edges that belong to a run at least kShortestCrease median edge lengths long:
-// isolated sharp edges of a scan's noise are no feature, a CAD part's long straight edge is even
-// when simplification left it only two or three edges (fandisk after CGAL's decimation). With
-// `between_planes`, also those whose two faces each have a neighbour in their plane: a CAD
-// tessellation's edge between two planes (a box of twelve triangles has runs of one edge; a
-// scan's faces almost never have such neighbours: 0.5 % of the femur's edges are flat).
-std::vector<char> creases(const TriMesh& mesh, double cos_feature, bool between_planes) {
-  std::vector<char> candidate(mesh.n_edges(), 0);
-  for (const auto e : mesh.edges())
-    if (!mesh.is_boundary(e) && sharp(mesh, e, cos_feature)) candidate[static_cast<std::size_t>(e.idx())] = 1;
-  const auto edges_of = incident(mesh, candidate);
-  UnionFind runs(mesh.n_edges());
-  for (const auto v : mesh.vertices()) {
-    const auto& edges = edges_of[static_cast<std::size_t>(v.idx())];
-    if (straight_through(mesh, v, edges))
-      runs.unite(static_cast<std::uint32_t>(edges[0].idx()), static_cast<std::uint32_t>(edges[1].idx()));
-  }
-  std::vector<double> run_length(mesh.n_edges(), 0);
-  for (const auto e : mesh.edges())
-    if (candidate[static_cast<std::size_t>(e.idx())]) run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] += mesh.calc_edge_length(e);
-  const double shortest = kShortestCrease * median_edge_length(mesh);
-  std::vector<char> crease(mesh.n_edges(), 0);
-  for (const auto e : mesh.edges()) {
-    const std::size_t i = static_cast<std::size_t>(e.idx());
-    if (!candidate[i]) continue;
-    crease[i] = run_length[runs.find(static_cast<std::uint32_t>(e.idx()))] >= shortest ||
-                (between_planes && has_coplanar_neighbour(mesh, mesh.face_handle(mesh.halfedge_handle(e, 0))) &&
-                 has_coplanar_neighbour(mesh, mesh.face_handle(mesh.halfedge_handle(e, 1))));
-  }
-  return crease;
-}
 
 }  // namespace
 
@@ -113,8 +41,9 @@ SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& refere
   mesh_.add_property(offset_);
   mesh_.add_property(feature_);
   std::vector<char> feature = creases(mesh, std::cos(feature_angle_deg * M_PI / 180.0), planar_creases);
+  const FacePatches patches(mesh);
   for (const auto e : mesh.edges())
-    if (mesh.is_boundary(e)) feature[static_cast<std::size_t>(e.idx())] = 1;
+    if (mesh.is_boundary(e) || patches.border(e)) feature[static_cast<std::size_t>(e.idx())] = 1;
   for (const auto e : mesh.edges()) mesh_.property(feature_, e) = feature[static_cast<std::size_t>(e.idx())];
   const auto edges_of = incident(mesh, feature);
   for (const auto v : mesh.vertices()) {
@@ -155,6 +84,35 @@ SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& refere
     const int line = role(a) == VertexRole::Line ? mesh_.property(line_, a) : mesh_.property(line_, b);
     if (line >= 0) lines_[static_cast<std::size_t>(line)].push_back({point(mesh, a), point(mesh, b)});
   }
+  follow_reference_borders(reference);
+}
+
+// A line along a patch border slides on the reference's border between the same two patches,
+// not on its own edges: after simplification those are chords of it (a curved border that is no
+// crease would move off by their sag, 8e-3 of the diagonal on a sphere's equator).
+void SurfaceConstraints::follow_reference_borders(const TriangleSoup& reference) {
+  const FacePatches patches(mesh_);
+  if (!patches.present() || reference.patches.size() != reference.triangles.size()) return;
+  const auto pair_key = [](int p, int q) { return std::minmax(p, q); };
+  std::map<std::pair<int, int>, std::vector<Segment>> borders;
+  const std::vector<FaceEdge> uses = sorted_face_edges(reference);
+  for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
+    if (uses[i].key != uses[i + 1].key || (i + 2 < uses.size() && uses[i + 2].key == uses[i].key)) continue;
+    const int p = reference.patches[uses[i].face], q = reference.patches[uses[i + 1].face];
+    if (p != q) borders[pair_key(p, q)].push_back({reference.points[uses[i].lo()], reference.points[uses[i].hi()]});
+  }
+  std::vector<char> replaced(lines_.size(), 0);
+  for (const auto e : mesh_.edges()) {
+    if (!patches.border(e)) continue;
+    const VertexHandle a = mesh_.to_vertex_handle(mesh_.halfedge_handle(e, 0)), b = mesh_.to_vertex_handle(mesh_.halfedge_handle(e, 1));
+    const int line = role(a) == VertexRole::Line ? mesh_.property(line_, a) : mesh_.property(line_, b);
+    if (line < 0 || replaced[static_cast<std::size_t>(line)]) continue;
+    const auto border = borders.find(pair_key(patches.of(mesh_.face_handle(mesh_.halfedge_handle(e, 0))),
+                                              patches.of(mesh_.face_handle(mesh_.halfedge_handle(e, 1)))));
+    if (border == borders.end()) continue;
+    lines_[static_cast<std::size_t>(line)] = border->second;
+    replaced[static_cast<std::size_t>(line)] = 1;
+  }
 }
 
 SurfaceConstraints::~SurfaceConstraints() {
@@ -189,6 +147,7 @@ TriMesh::VertexHandle SurfaceConstraints::split_surface_edge(EdgeHandle e, bool 
   const Vec3 middle = 0.5 * (point(mesh_, a) + point(mesh_, b));
   const VertexHandle m = mesh_.add_vertex(to_openmesh(middle));
   mesh_.split(e, m);
+  inherit_split_patches(mesh_, m, a, b);
   mesh_.property(role_, m) = VertexRole::Surface;
   mesh_.property(line_, m) = -1;
   if (ends_offset) {
@@ -216,7 +175,12 @@ void SurfaceConstraints::flip_feature_through_apex(TriMesh::HalfedgeHandle h) {
   const VertexHandle apex = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h));
   const int line = line_of_feature_edge(a, b);
   const EdgeHandle e = mesh_.edge_handle(h);
+  // The crease then runs a-apex-b: both faces lie on the side of the face without the apex.
+  const FacePatches patches(mesh_);
+  const int far_side = patches.of(mesh_.opposite_face_handle(h));
   mesh_.flip(e);
+  if (patches.present())
+    for (const int i : {0, 1}) set_face_patch(mesh_, mesh_.face_handle(mesh_.halfedge_handle(e, i)), far_side);
   mesh_.property(feature_, e) = 0;
   mesh_.property(feature_, mesh_.edge_handle(mesh_.find_halfedge(apex, a))) = 1;
   mesh_.property(feature_, mesh_.edge_handle(mesh_.find_halfedge(apex, b))) = 1;
@@ -236,6 +200,7 @@ TriMesh::VertexHandle SurfaceConstraints::split_feature_edge(EdgeHandle e) {
   mesh_.property(offset_, m) = 0;
   mesh_.set_point(m, to_openmesh(project(m, 0.5 * (point(mesh_, a) + point(mesh_, b)))));
   mesh_.split(e, m);
+  inherit_split_patches(mesh_, m, a, b);
   for (const auto out : mesh_.voh_range(m)) {
     const VertexHandle end = mesh_.to_vertex_handle(out);
     mesh_.property(feature_, mesh_.edge_handle(out)) = end == a || end == b;

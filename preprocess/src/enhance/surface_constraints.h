@@ -20,7 +20,8 @@ enum class VertexRole : std::uint8_t {
 /// follow its elements through flips, collapses and garbage collection; flips and collapses never
 /// touch a feature edge or a vertex on one, but for a cap's long edge: flip_feature_through_apex).
 ///
-/// Features are boundary edges and creases. A crease is a run, at least five median edge lengths
+/// Features are boundary edges, the borders between boundary patches (mesh_patches.h) and
+/// creases. A crease is a run, at least five median edge lengths
 /// long, of edges whose dihedral angles exceed the feature angle, joined at vertices where the run
 /// goes nearly straight on (turns by less than 30 degrees) and that have no other such edge. A CAD
 /// part's creases are such runs, even where decimation left a long straight edge of the part only
@@ -53,7 +54,8 @@ class SurfaceConstraints {
   /// raised along the reference's normal by the vertex's offset at the start (a simplified
   /// mesh's vertices sit off the original surface so that its faces follow it: sliding keeps that),
   /// Line vertices the closest point of the feature line they were on at the start (the input's
-  /// segments of their run). Fixed vertices do not move; x is returned.
+  /// segments of their run; along a patch border, the reference's border between the same two
+  /// patches). Fixed vertices do not move; x is returned.
   Vec3 project(TriMesh::VertexHandle v, const Vec3& x) const;
 
   /// Splits non-feature edge e at its midpoint, a new Surface vertex at its present distance from
@@ -81,6 +83,7 @@ class SurfaceConstraints {
   /// The line a new vertex on feature edge (a, b) belongs to: either end's, or a new line of the
   /// edge's own segment when both are corners.
   int line_of_feature_edge(TriMesh::VertexHandle a, TriMesh::VertexHandle b);
+  void follow_reference_borders(const TriangleSoup& reference);
   TriMesh& mesh_;
   OpenMesh::VPropHandleT<VertexRole> role_;
   OpenMesh::VPropHandleT<int> line_;          ///< Line vertices: index into lines_; -1 otherwise

@@ -126,6 +126,7 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, const std::vector<FaceEdg
     HoleRim rim;
     RepairHole hole;
     LoopBorder border;
+    std::unordered_map<int, double> rim_length_by_patch;  // when the soup has patches
   };
   std::vector<Loop> loops;
   for (const std::uint32_t start : starts) {
@@ -140,6 +141,7 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, const std::vector<FaceEdg
       loop.rim.vertices.push_back(lowest[v]);
       loop.rim.face_normals.push_back(unit_normal(soup, b.face));
       loop.hole.rim_length += (soup.points[b.to] - soup.points[v]).norm();
+      if (!soup.patches.empty()) loop.rim_length_by_patch[soup.patches[b.face]] += (soup.points[b.to] - soup.points[v]).norm();
       loop.border.vector_area += (soup.points[v] - origin).cross(soup.points[b.to] - origin) / 2;
       v = leave(b.to);
     } while (border.count(v) && !walked.count(v));
@@ -198,6 +200,13 @@ std::vector<RepairHole> fill_holes(TriangleSoup& soup, const std::vector<FaceEdg
           (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).norm() / 2;
     hole.plane_distance = plane_distance(soup.points, rim.vertices, patch);
     soup.triangles.insert(soup.triangles.end(), patch.begin(), patch.end());
+    if (!soup.patches.empty()) {  // the patch joins the boundary patch with the most of its rim
+      const auto& by_patch = loops[l].rim_length_by_patch;
+      const auto most = std::max_element(by_patch.begin(), by_patch.end(), [](const auto& a, const auto& b) {
+        return a.second != b.second ? a.second < b.second : a.first > b.first;
+      });
+      soup.patches.resize(soup.triangles.size(), most->first);
+    }
     // The next holes see the patch as surface: two of them may share a split point.
     for (const Triangle& t : patch)
       for (int k = 0; k < 3; ++k) {

@@ -271,6 +271,12 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
   }
   TriangleSoup kept;
   kept.points = std::move(cut.soup.points);
+  kept.patch_names = surface.patch_names;
+  // A kept piece stays in its face's patch.
+  const auto keep = [&](const Triangle& t, std::size_t f) {
+    kept.triangles.push_back(t);
+    if (!surface.patches.empty()) kept.patches.push_back(surface.patches[cut.source[f]]);
+  };
   std::map<std::uint32_t, char> nested_parts;
   for (std::size_t f = 0; f < cut.soup.triangles.size(); ++f) {
     const auto w = outside.find(patch[f]);
@@ -278,14 +284,14 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
     Triangle t = cut.soup.triangles[f];
     const std::uint32_t part = parts.find(surface.triangles[cut.source[f]][0]);
     if (open[part] || (!cut.doubled[f] && winding_outside == 0)) {
-      kept.triangles.push_back(t);
+      keep(t, f);
       continue;
     }
     if (!part_was_cut[part] && winding_outside > 0) {
       nested_parts[part] = 1;
       if (keep_cavities) {
         if (winding_outside % 2 == 1) std::swap(t[1], t[2]);
-        kept.triangles.push_back(t);
+        keep(t, f);
         continue;
       }
     }

@@ -120,13 +120,17 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   // faces besides them, are a wall two solids share (each faces into the other): all go, and the
   // solids become one. Elsewhere (a solid with one face written twice) the first stays.
   std::vector<Triangle> faces;
+  std::vector<int> patches;  // of the faces kept, when the soup has patches
   faces.reserve(soup.triangles.size());
-  for (Triangle t : soup.triangles) {
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    Triangle t = soup.triangles[f];
     for (std::uint32_t& v : t) v = clusters.find(v);
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
       ++counts.degenerate_faces;
-    else
+    } else {
       faces.push_back(t);
+      if (!soup.patches.empty()) patches.push_back(soup.patches[f]);
+    }
   }
   const std::vector<std::pair<Corners, std::uint32_t>> order = by_corners(faces);
   // (a, b, c) is a rotation of its sorted order iff an even number of its pairs are inverted.
@@ -160,8 +164,12 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   }
   std::size_t kept = 0;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    if (!removed[f]) faces[kept++] = faces[f];
+    if (!removed[f]) {
+      if (!patches.empty()) patches[kept] = patches[f];
+      faces[kept++] = faces[f];
+    }
   faces.resize(kept);
+  if (!patches.empty()) patches.resize(kept);
 
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
   std::vector<Vec3> points;
@@ -177,6 +185,7 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   counts.unused_vertices = soup.points.size() - points.size() - counts.welded_vertices;
   soup.points = std::move(points);
   soup.triangles = std::move(faces);
+  soup.patches = std::move(patches);
   return counts;
 }
 

@@ -52,11 +52,20 @@ TriangleSoup in_spatial_order(const TriangleSoup& soup) {
     new_index[order[k]] = static_cast<std::uint32_t>(k);
     sorted.points.push_back(soup.points[order[k]]);
   }
-  sorted.triangles.reserve(soup.triangles.size());
-  for (const Triangle& t : soup.triangles) sorted.triangles.push_back({new_index[t[0]], new_index[t[1]], new_index[t[2]]});
-  std::stable_sort(sorted.triangles.begin(), sorted.triangles.end(), [](const Triangle& a, const Triangle& b) {
-    return std::min({a[0], a[1], a[2]}) < std::min({b[0], b[1], b[2]});
+  std::vector<Triangle> renumbered;
+  renumbered.reserve(soup.triangles.size());
+  for (const Triangle& t : soup.triangles) renumbered.push_back({new_index[t[0]], new_index[t[1]], new_index[t[2]]});
+  std::vector<std::uint32_t> face_order(renumbered.size());
+  std::iota(face_order.begin(), face_order.end(), 0u);
+  std::stable_sort(face_order.begin(), face_order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Triangle &s = renumbered[a], &t = renumbered[b];
+    return std::min({s[0], s[1], s[2]}) < std::min({t[0], t[1], t[2]});
   });
+  sorted.triangles.reserve(renumbered.size());
+  for (const std::uint32_t f : face_order) sorted.triangles.push_back(renumbered[f]);
+  if (!soup.patches.empty())  // each face keeps its patch
+    for (const std::uint32_t f : face_order) sorted.patches.push_back(soup.patches[f]);
+  sorted.patch_names = soup.patch_names;
   return sorted;
 }
 

@@ -13,7 +13,7 @@ namespace meshprep::detail {
 std::vector<std::uint32_t> morton_order(const std::vector<Vec3>& points);
 
 /// The same surface with its vertices in Morton (Z-curve) order of their positions and its faces
-/// ordered by their smallest vertex index. The collapse loop walks 1-rings and 2-rings ~10^6 times
+/// ordered by their smallest vertex index (each keeping its patch). The collapse loop walks 1-rings and 2-rings ~10^6 times
 /// in what is otherwise the file's order; on bunny00 at 10 % this order is ~12 % faster.
 TriangleSoup in_spatial_order(const TriangleSoup& soup);
 

@@ -40,8 +40,9 @@ bool move_keeps_shape(const TriMesh& mesh, VertexHandle v, const Vec3& moved_to,
 std::size_t fit_to_reference(TriMesh& mesh, const TriangleBvh& reference, double min_angle_cosine,
                              const HeightField& field, const std::vector<char>* movable) {
   std::size_t moved = 0;
+  const FacePatches patches(mesh);
   for (const VertexHandle v : mesh.vertices()) {
-    if (!relaxable(mesh, v)) continue;
+    if (!relaxable(mesh, v, patches)) continue;
     if (movable && !(*movable)[static_cast<std::size_t>(v.idx())]) continue;
     const Vec3 x = point(mesh, v);
     double shortest = std::numeric_limits<double>::infinity();

@@ -21,8 +21,8 @@ Vec3 point(const TriMesh& mesh, TriMesh::VertexHandle v) { return to_eigen(mesh.
 // One walk around v instead of OpenMesh's is_boundary, is_manifold and valence (the library's are
 // out of line and check every handle): a vertex with no outgoing boundary halfedge is interior and
 // manifold, OpenMesh keeping a boundary halfedge as the outgoing one wherever there is one.
-bool relaxable(const TriMesh& mesh, TriMesh::VertexHandle v) {
-  if (mesh.status(v).deleted()) return false;
+bool relaxable(const TriMesh& mesh, TriMesh::VertexHandle v, const FacePatches& patches) {
+  if (mesh.status(v).deleted() || on_patch_border(patches, mesh, v)) return false;
   int valence = 0;
   for (const auto h : mesh.voh_range(v)) {
     if (mesh.is_boundary(h)) return false;

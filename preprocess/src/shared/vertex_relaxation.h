@@ -4,6 +4,7 @@
 // and which vertices are on a feature and must stay.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/mesh_patches.h"
 
 #include <optional>
 #include <vector>
@@ -20,9 +21,10 @@ struct ShapeTail {
   double min_angle_cosine = 1.0;
 };
 
-/// An interior manifold vertex of valence 3 or more that is not deleted: what the relaxations
-/// and the fit to the original (surface_fit.h) may move.
-bool relaxable(const TriMesh& mesh, TriMesh::VertexHandle v);
+/// An interior manifold vertex of valence 3 or more that is not deleted nor on a patch border (a
+/// border stays where it is): what the relaxations and the fit to the original (surface_fit.h) may
+/// move.
+bool relaxable(const TriMesh& mesh, TriMesh::VertexHandle v, const FacePatches& patches);
 
 /// Whether a face around v is in the tail.
 bool in_tail(const TriMesh& mesh, TriMesh::VertexHandle v, const ShapeTail& tail);

@@ -7,6 +7,7 @@
 #include "shared/triangle_angles.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/mesh_patches.h"
 #include "meshprep/preprocess/rbf/local_height_map.h"
 
 #include <algorithm>
@@ -72,7 +73,7 @@ class Collapser {
             const std::vector<double>& error_cap, std::vector<int>& merged_into, SimplifyResult& result,
             const HeightField& field)
       : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), error_cap_(error_cap),
-        merged_into_(merged_into), result_(result), field_(field),
+        merged_into_(merged_into), result_(result), field_(field), patches_(mesh),
         edges_(mesh.n_edges()),
         locked_(mesh.n_vertices(), 0),
         version_(mesh.n_vertices()),
@@ -80,7 +81,9 @@ class Collapser {
         min_angle_cosine_(params.min_angle_deg > 0 ? std::cos(params.min_angle_deg * M_PI / 180.0) : 2.0) {
     for (const VertexHandle v : mesh_.vertices()) {
       version_[idx(v)] = next_version_++;
-      locked_[idx(v)] = !mesh_.is_manifold(v);
+      // A patch border's corner (where three patches meet, or a border meets the boundary) stays.
+      const int borders = border_edges(v);
+      locked_[idx(v)] = !mesh_.is_manifold(v) || (borders != 0 && (borders != 2 || mesh_.is_boundary(v)));
       whole_error_[idx(v)] = mesh_.is_boundary(v);
     }
     for (const auto f : mesh_.faces()) {
@@ -247,11 +250,29 @@ class Collapser {
   }
   Vec3 point(VertexHandle v) const { return to_eigen(mesh_.point(v)); }
 
-  // The end point that must stay: a boundary vertex collapsing with an interior one keeps its place.
+  // The patch borders at v (mesh_patches.h).
+  int border_edges(VertexHandle v) const {
+    int borders = 0;
+    for (const auto e : mesh_.ve_range(v)) borders += patches_.border(e);
+    return borders;
+  }
+
+  // The end point that must stay: a boundary vertex collapsing with an interior one keeps its
+  // place; so does a vertex on a patch border, and along a border either end keeps its place
+  // (the border polyline loses a vertex, never moves: each face keeps its side of it).
   VertexHandle pinned_end(VertexHandle a, VertexHandle b) const {
     const bool boundary_a = mesh_.is_boundary(a), boundary_b = mesh_.is_boundary(b);
     if (boundary_a != boundary_b) return boundary_a ? a : b;
+    if (!patches_.present()) return VertexHandle();
+    const bool border_a = border_edges(a) > 0, border_b = border_edges(b) > 0;
+    if (border_a != border_b || border_a) return border_a && !border_b ? a : b;
     return VertexHandle();
+  }
+
+  // Whether collapsing a-b keeps every patch border: an edge between two border vertices may
+  // collapse only if it is a border edge itself (else the patch between would be pinched).
+  bool keeps_patch_borders(EdgeHandle e, VertexHandle a, VertexHandle b) const {
+    return !patches_.present() || patches_.border(e) || border_edges(a) == 0 || border_edges(b) == 0;
   }
 
   // Queue the edge with an estimate of its cost: Bending's quadric part (cheap, exact) with the
@@ -271,7 +292,7 @@ class Collapser {
     record.complete = 0;
     const HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
     const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
-    if (locked_[idx(a)] || locked_[idx(b)]) return false;
+    if (locked_[idx(a)] || locked_[idx(b)] || !keeps_patch_borders(e, a, b)) return false;
     const Vec3 pa = point(a), pb = point(b);
     const double length = (pb - pa).norm();
     if (params_.cost == CollapseCost::Distance) {
@@ -359,7 +380,7 @@ class Collapser {
   HalfedgeHandle collapse_direction(EdgeHandle e) {
     const HalfedgeHandle h0 = mesh_.halfedge_handle(e, 0), h1 = mesh_.halfedge_handle(e, 1);
     const VertexHandle a = mesh_.from_vertex_handle(h0), b = mesh_.to_vertex_handle(h0);
-    if (locked_[idx(a)] || locked_[idx(b)]) return HalfedgeHandle();
+    if (locked_[idx(a)] || locked_[idx(b)] || !keeps_patch_borders(e, a, b)) return HalfedgeHandle();
     const HalfedgeHandle h = pinned_end(a, b) == a ? h1 : h0;  // a pinned boundary vertex stays
     return link_.holds(h) ? h : HalfedgeHandle();
   }
@@ -372,6 +393,7 @@ class Collapser {
   std::vector<int>& merged_into_;
   SimplifyResult& result_;
   const HeightField field_;
+  const FacePatches patches_;
   std::vector<EdgeRecord> edges_;
   std::vector<char> locked_;  // non-manifold vertices: never moved
   // Changes each time a vertex moves or merges (unique over all vertices and times: never 0).

@@ -50,8 +50,9 @@ std::size_t relax_on_reference(TriMesh& mesh, const TriangleBvh& reference, doub
   const ShapeTail tail{kTailMargin * ShapeTail().ratio, min_angle_cosine};
   std::size_t moves = 0;
   std::vector<Vec3> ring;
+  const FacePatches patches(mesh);
   for (const VertexHandle v : mesh.vertices()) {
-    if (!relaxable(mesh, v) || !in_tail(mesh, v, tail)) continue;
+    if (!relaxable(mesh, v, patches) || !in_tail(mesh, v, tail)) continue;
     const std::optional<TangentialMove> relax = tangential_move(mesh, v);
     if (!relax || on_feature(mesh, v, ring)) continue;
     const TriangleBvh::Hit here = reference.closest_point(relax->from);

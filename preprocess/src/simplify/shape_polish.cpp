@@ -21,8 +21,9 @@ bool nearly_parallel(const Vec3& n0, const Vec3& n1) { return n0.dot(n1) >= kFla
 
 std::size_t flip_sweep(TriMesh& mesh, double tolerance, const HeightField& field) {
   std::size_t flips = 0;
+  const FacePatches patches(mesh);
   for (const auto e : mesh.edges()) {
-    if (mesh.status(e).deleted() || mesh.is_boundary(e)) continue;
+    if (mesh.status(e).deleted() || mesh.is_boundary(e) || patches.border(e)) continue;
     const auto h0 = mesh.halfedge_handle(e, 0), h1 = mesh.halfedge_handle(e, 1);
     const VertexHandle va = mesh.from_vertex_handle(h0), vb = mesh.to_vertex_handle(h0);
     const Vec3 a = point(mesh, va), b = point(mesh, vb);
@@ -54,8 +55,9 @@ std::size_t relax_sweep(TriMesh& mesh, const std::vector<Quadric>& quadrics, dou
                         const HeightField& field) {
   std::size_t moves = 0;
   std::vector<Vec3> ring;
+  const FacePatches patches(mesh);
   for (const VertexHandle v : mesh.vertices()) {
-    if (!relaxable(mesh, v) || (tail && !in_tail(mesh, v, *tail))) continue;
+    if (!relaxable(mesh, v, patches) || (tail && !in_tail(mesh, v, *tail))) continue;
     const std::optional<TangentialMove> relax = tangential_move(mesh, v);
     if (!relax) continue;
     const Quadric& q = quadrics[static_cast<std::size_t>(v.idx())];

@@ -1,5 +1,7 @@
 #include "smooth/filtered_normals.h"
 
+#include "meshprep/core/mesh_patches.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -94,9 +96,14 @@ std::vector<Vec3> filtered_face_normals(const TriMesh& mesh) {
 
 std::vector<char> crease_edges(const TriMesh& mesh, const std::vector<Vec3>& normals, double cos_limit) {
   std::vector<char> crease(mesh.n_edges(), 0);
+  const FacePatches patches(mesh);
   tbb::parallel_for(std::size_t(0), mesh.n_edges(), [&](std::size_t i) {
     const TriMesh::EdgeHandle e(static_cast<int>(i));
     if (mesh.is_boundary(e)) return;
+    if (patches.border(e)) {  // a patch border is kept as a crease
+      crease[i] = 1;
+      return;
+    }
     const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0)), f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
     crease[i] = normals[static_cast<std::size_t>(f0.idx())].dot(normals[static_cast<std::size_t>(f1.idx())]) < cos_limit;
   });

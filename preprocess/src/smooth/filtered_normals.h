@@ -16,7 +16,7 @@ namespace meshprep::detail {
 std::vector<Vec3> filtered_face_normals(const TriMesh& mesh);
 
 /// The crease edges (1, indexed by edge): interior edges whose faces' normals have a cosine under
-/// `cos_limit`.
+/// `cos_limit`, and the borders between patches (mesh_patches.h).
 std::vector<char> crease_edges(const TriMesh& mesh, const std::vector<Vec3>& normals, double cos_limit);
 
 }  // namespace meshprep::detail

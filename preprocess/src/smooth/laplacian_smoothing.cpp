@@ -1,5 +1,7 @@
 #include "smooth/laplacian_smoothing.h"
 
+#include "meshprep/core/mesh_patches.h"
+
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 
 #include <vector>
@@ -9,9 +11,10 @@ namespace {
 
 void uniform_laplacian_step(TriMesh& mesh, double factor) {
   std::vector<TriMesh::Point> moved(mesh.n_vertices());
+  const FacePatches patches(mesh);
   for (const auto v : mesh.vertices()) {
     moved[static_cast<std::size_t>(v.idx())] = mesh.point(v);
-    if (mesh.is_boundary(v) || mesh.is_isolated(v)) continue;
+    if (mesh.is_boundary(v) || mesh.is_isolated(v) || on_patch_border(patches, mesh, v)) continue;
     TriMesh::Point mean(0, 0, 0);
     int count = 0;
     for (const auto u : mesh.vv_range(v)) {
@@ -33,10 +36,19 @@ void taubin_smooth(TriMesh& mesh, std::size_t iterations) {
 }
 
 void laplace_smooth(TriMesh& mesh, std::size_t iterations) {
+  // OpenMesh's smoother leaves locked vertices where they are: the patch borders stay.
+  const FacePatches patches(mesh);
+  std::vector<TriMesh::VertexHandle> locked;
+  for (const auto v : mesh.vertices())
+    if (!mesh.status(v).locked() && on_patch_border(patches, mesh, v)) {
+      mesh.status(v).set_locked(true);
+      locked.push_back(v);
+    }
   OpenMesh::Smoother::JacobiLaplaceSmootherT<TriMesh> smoother(mesh);
   smoother.initialize(OpenMesh::Smoother::JacobiLaplaceSmootherT<TriMesh>::Tangential_and_Normal,
                       OpenMesh::Smoother::JacobiLaplaceSmootherT<TriMesh>::C0);
   smoother.smooth(static_cast<unsigned int>(iterations));
+  for (const auto v : locked) mesh.status(v).set_locked(false);
 }
 
 }  // namespace meshprep

@@ -37,6 +37,14 @@ void set_face_patches(TriMesh& mesh, const std::vector<int>& patches, const TagN
 /// Sets the patch of one face (a face a stage added); the mesh must have patches.
 void set_face_patch(TriMesh& mesh, TriMesh::FaceHandle f, int patch);
 
+/// After mesh.split(e, m) of the edge a-b: the faces the split added (patch 0, OpenMesh's default)
+/// take the patch of the face each was cut from, its neighbour across the edge from m to the
+/// corner off a-b. Nothing to do on a mesh without patches.
+void inherit_split_patches(TriMesh& mesh, TriMesh::VertexHandle m, TriMesh::VertexHandle a, TriMesh::VertexHandle b);
+
+/// Whether the faces around v lie in more than one patch (v is on a patch border).
+bool on_patch_border(const FacePatches& patches, const TriMesh& mesh, TriMesh::VertexHandle v);
+
 /// The names stored with the mesh's patches (empty without patches).
 TagNames patch_names(const TriMesh& mesh);
 

@@ -16,6 +16,7 @@
 /// the distribution stops improving; the best is kept.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/preprocess/patches/patches.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -42,7 +43,8 @@ struct EnhanceParams {
   /// constants were tuned with (enhance_defaults.h).
   static constexpr double kLargestAutoDeviation = 2e-3;
   double target_min_angle_deg = 20;     ///< faces under this smallest angle are always in the tail
-  double feature_angle_deg = 45;        ///< an edge with a larger dihedral angle is a crease; 180 = none
+  /// An edge with a larger dihedral angle is a crease; 180 = none. Patch borders are features too.
+  double feature_angle_deg = kDefaultCreaseAngleDeg;
   bool flips = true;
   EnhanceRemesh remesh = EnhanceRemesh::Auto;
   /// Auto remeshes inputs with more than this share of faces under the target angle: one that
