@@ -127,5 +127,6 @@ Action add_enhance_command(CLI::App& app);
 Action add_pipeline_command(CLI::App& app);
 Action add_improve_command(CLI::App& app);
 Action add_repair_command(CLI::App& app);
+Action add_patches_command(CLI::App& app);
 
 }  // namespace meshprep::cli

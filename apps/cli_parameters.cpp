@@ -1,5 +1,7 @@
 #include "cli_parameters.h"
 
+#include "meshprep/preprocess/patches/patches_parameters.h"
+
 #include "cli_common.h"
 
 #include <cctype>
@@ -72,6 +74,44 @@ CLI::Option* add_auto_parameter(CLI::App& cmd, const ParameterInfo& info, std::o
           },
           "E|auto"))
       ->default_str(field ? parameter_text(*field) : "auto");
+}
+
+void add_patch_edits(CLI::App& cmd, PatchParams& params) {
+  const PatchParameters& info = patch_parameters();
+  cmd.add_option_function<std::vector<std::string>>(
+         info.renames.flag,
+         [&params](const std::vector<std::string>& pairs) {
+           for (const std::string& pair : pairs) {
+             const std::size_t equals = pair.find('=');
+             params.renames.emplace_back(pair.substr(0, equals), pair.substr(equals + 1));
+           }
+         },
+         capitalised(info.renames.help))
+      ->check(CLI::Validator(
+          [](std::string& pair) {
+            const std::size_t equals = pair.find('=');
+            return equals == std::string::npos || equals == 0 || equals + 1 == pair.size()
+                       ? "expected OLD=NEW, not '" + pair + "'"
+                       : std::string();
+          },
+          ""))
+      ->type_name("OLD=NEW");
+  cmd.add_option_function<std::vector<std::string>>(
+         info.merges.flag,
+         [&params](const std::vector<std::string>& lists) {
+           for (const std::string& list : lists) {
+             std::vector<std::string> names;
+             std::size_t start = 0;
+             for (std::size_t comma = list.find(','); ; comma = list.find(',', start)) {
+               names.push_back(list.substr(start, comma - start));
+               if (comma == std::string::npos) break;
+               start = comma + 1;
+             }
+             params.merges.push_back(names);
+           }
+         },
+         capitalised(info.merges.help))
+      ->type_name("A,B,...");
 }
 
 CLI::Option* add_override(CLI::App& cmd, const ParameterInfo& info, std::optional<double>& given,

@@ -4,6 +4,7 @@
 // struct's default, so no command restates them.
 
 #include "meshprep/core/parameter.h"
+#include "meshprep/preprocess/patches/patches.h"
 
 #include <CLI/CLI.hpp>
 
@@ -37,6 +38,10 @@ CLI::Option* add_auto_parameter(CLI::App& cmd, const ParameterInfo& info, std::o
 CLI::Option* add_override(CLI::App& cmd, const ParameterInfo& info, std::optional<double>& given, double default_value);
 CLI::Option* add_override(CLI::App& cmd, const ParameterInfo& info, std::optional<std::size_t>& given,
                           std::size_t default_value);
+
+/// --rename OLD=NEW and --merge A,B,... (patches_parameters.h), each repeatable, appended to
+/// `params`' renames and merges (after those of a configuration file).
+void add_patch_edits(CLI::App& cmd, PatchParams& params);
 
 /// One of `choices` by name, bound to `field`, its current name shown as the default.
 template <class T>

@@ -32,6 +32,7 @@ struct PipelineOptions {
   std::string input, outdir, config, json, format, msh_version, fail_on;
   ThresholdFlags thresholds;
   ImproveFlags improve;
+  PatchParams patch_edits;  ///< --rename and --merge, after the configuration file's
   double ratio = 0, extrude_base = 0;
   std::size_t target_faces = 0, threads = 0;
   unsigned timeout = 0;
@@ -55,6 +56,9 @@ PipelineConfig effective_config(const PipelineOptions& o) {
   config.verdict = o.thresholds.applied_to(config.verdict);
   config.improve.params = o.improve.applied_to(config.improve.params);
   if (o.improve.off) config.improve.enabled = false;
+  PatchParams& patches = config.patches.params;
+  patches.merges.insert(patches.merges.end(), o.patch_edits.merges.begin(), o.patch_edits.merges.end());
+  patches.renames.insert(patches.renames.end(), o.patch_edits.renames.begin(), o.patch_edits.renames.end());
   return config;
 }
 
@@ -224,6 +228,7 @@ Action add_pipeline_command(CLI::App& app) {
       ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
+  add_patch_edits(*cmd, o->patch_edits);
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/true);
   add_threshold_options(*cmd, o->thresholds);
   cmd->add_option("--fail-on", o->fail_on,

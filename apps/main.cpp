@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   add(cli::add_improve_command);
   add(cli::add_pipeline_command);
   add(cli::add_repair_command);
+  add(cli::add_patches_command);
   CLI::App* help = app.add_subcommand("help", "Show this help");
   cli::refuse_non_finite_numbers(app);
 

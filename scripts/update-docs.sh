@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-build/bin/meshprep}
-commands=(quality convert reconstruct simplify smooth enhance tetrahedralize improve pipeline repair)
+commands=(quality convert reconstruct simplify smooth enhance tetrahedralize improve pipeline repair patches)
 
 {
   echo "# meshprep command-line reference"

@@ -10,11 +10,7 @@ bin=$1
 src=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/cli_harness.sh"
-# Debian's python3-meshio serves /usr/bin/python3, not a venv's python3 first on PATH.
-py=
-for p in python3 /usr/bin/python3; do $p -c "import meshio, numpy" 2>/dev/null && { py=$p; break; }; done
-[ -n "$py" ] || { echo "FAIL: no python3 with meshio and numpy (scripts/install-deps.sh installs python3-meshio)"; exit 1; }
-one_line() { [ "$(wc -l < err.txt)" = 1 ] && grep -q "$2" err.txt && ok || bad "$1: expected one line with '$2'"; }
+require_meshio_python
 
 # Tet files are read back alone (fem_readback.py reads every tet mesh of a folder).
 readback() {  # DIR TETFILE...
@@ -53,7 +49,7 @@ assert checks["max_dihedral_deg"]["value"] == q["max_dihedral_deg"]["max"] and c
 assert j["fem_ready"] == all(c["ok"] for c in checks.values()), j["fem_ready"]
 assert len(j["problems"]) == sum(not c["ok"] for c in checks.values()), j["problems"]
 assert len(q["worst_tets"]) == 10 and len(q["worst_tets"][0]["centre"]) == 3
-assert [s["name"] for s in j["stages"]] == ["check", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"]
+assert [s["name"] for s in j["stages"]] == ["check", "patches", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"]
 # TetGen's tets beside the improved ones; the same boundary, so the same volume.
 g, i = j["tets"]["tetgen_quality"], j["tets"]["improvement"]
 assert g["min_dihedral_deg"]["min"] < 10 <= q["min_dihedral_deg"]["min"], (g["min_dihedral_deg"], q["min_dihedral_deg"])

@@ -97,10 +97,11 @@ TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
   config.simplify.ratio = 0.5;
   const PipelineResult r = run_pipeline(mesh_file(test::icosphere(3), "sphere.off"), config);
   EXPECT_EQ(stage_names(r),
-            (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"}));
+            (std::vector<std::string>{"check", "patches", "simplify", "smooth", "enhance", "quality", "tetrahedralize",
+                                      "improve"}));
   EXPECT_FALSE(r.from_points);
-  EXPECT_TRUE(r.stages[1].ran);
-  EXPECT_FALSE(r.stages[2].ran);  // smoothing is off by default
+  EXPECT_TRUE(r.stages[2].ran);
+  EXPECT_FALSE(r.stages[3].ran);  // smoothing is off by default
   EXPECT_NEAR(static_cast<double>(r.final_quality.faces), 640.0, 640 * 0.02);  // the target +-1 %, enhance +-1 %
   // TetGen alone leaves an 8.4-degree sliver here (issue 29); the improvement reaches its goal.
   ASSERT_TRUE(r.tetgen_quality && r.improvement);
@@ -130,13 +131,13 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
   PipelineConfig config = small_config();
   config.tetrahedralize.keep_surface = true;  // not the default for a block: its walls are thin
   const PipelineResult r = run_pipeline(terrain_points(), config);
-  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "simplify", "smooth", "enhance", "quality",
-                                                      "tetrahedralize", "improve"}));
+  EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "patches", "simplify", "smooth", "enhance",
+                                                      "quality", "tetrahedralize", "improve"}));
   EXPECT_TRUE(r.from_points);
   EXPECT_EQ(r.input_points, 1500u);
   // The automatic ratio for a terrain keeps 7 % of the faces.
-  EXPECT_NEAR(static_cast<double>(r.stages[1].faces_after), 0.07 * static_cast<double>(r.stages[1].faces_before),
-              0.02 * static_cast<double>(r.stages[1].faces_before));
+  EXPECT_NEAR(static_cast<double>(r.stages[2].faces_after), 0.07 * static_cast<double>(r.stages[2].faces_before),
+              0.02 * static_cast<double>(r.stages[2].faces_before));
   EXPECT_EQ(r.final_quality.boundary_loops, 1u);
   ASSERT_TRUE(r.tets && r.extrusion_depth);
   expect_verdict_follows_the_figures(r);
@@ -247,7 +248,7 @@ TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
   EXPECT_EQ(summary["thresholds"][0]["check"], "min_dihedral_deg");
   EXPECT_EQ(summary["thresholds"][0]["value"], r.tet_quality->min_dihedral_deg.min);
   EXPECT_EQ(summary["tets"]["tet_quality"]["worst_tets"].size(), kDefaultWorstTets);
-  EXPECT_EQ(summary["stages"].size(), 7u);
+  EXPECT_EQ(summary["stages"].size(), 8u);
   // TetGen's tets beside the improved ones, and what the improvement did.
   EXPECT_EQ(summary["tets"]["tetgen_quality"]["tetrahedra"], r.tetgen_quality->tetrahedra);
   EXPECT_EQ(summary["tets"]["improvement"]["stopped_by"], r.improvement->stopped_by);
@@ -370,9 +371,9 @@ TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {
   observer.stage_started = [&](const std::string& name) { started.push_back(name); };
   observer.stage_finished = [&](const StageRecord& s) { finished.push_back(s.name); };
   run_pipeline(mesh_file(test::icosphere(2), "sphere.off"), config, observer);
-  EXPECT_EQ(started, (std::vector<std::string>{"check", "enhance", "quality"}));  // the others are skipped
-  EXPECT_EQ(finished,
-            (std::vector<std::string>{"check", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"}));
+  EXPECT_EQ(started, (std::vector<std::string>{"check", "patches", "enhance", "quality"}));  // the others are skipped
+  EXPECT_EQ(finished, (std::vector<std::string>{"check", "patches", "simplify", "smooth", "enhance", "quality",
+                                                "tetrahedralize", "improve"}));
 }
 
 }  // namespace

@@ -2,12 +2,14 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/core/mesh_patches.h"
 #include "meshprep/fem/extrude.h"
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/compose/adaptive_reconstruction.h"
 #include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/patches/patches.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
 #include "meshprep/preprocess/repair/repair.h"
 #include "meshprep/preprocess/simplify/simplify.h"
@@ -60,6 +62,7 @@ class Run {
     try {
       if (result_.from_points) reconstruct();
       else check_input();
+      patches_stage();
       input_self_intersections_ = result_.input_quality.self_intersections;
       simplify_stage();
       smooth_stage();
@@ -297,6 +300,26 @@ class Run {
                              "or switch tetrahedralize off to process the surface only");
       }
     }
+  }
+
+  // The boundary patches of the input surface (the file's, else the creases'), edited as asked,
+  // given to the halfedge mesh the stages work on: they carry them to the tets.
+  void patches_stage() {
+    StageRecord record = started("patches");
+    PatchParams params = config_.patches.params;
+    if (!params.feature_angle_deg) params.feature_angle_deg = config_.enhance.params.feature_angle_deg;
+    const Clock::time_point start = Clock::now();
+    const PatchResult r = on_input([&] { return find_patches(result_.input_surface, params); });
+    set_face_patches(mesh_, result_.input_surface.patches, result_.input_surface.patch_names);
+    record.seconds = seconds_since(start);
+    fill_shape(record, result_.input_quality);
+    record.details = to_json(r);
+    record.note = std::to_string(r.patches) + (r.patches == 1 ? " patch" : " patches") +
+                  (r.segmented ? ", bounded by the creases sharper than " + figure(r.feature_angle_deg) + " deg"
+                               : ", named by the file");
+    if (r.merged) record.note += ", " + std::to_string(r.merged) + " merged";
+    if (!r.renamed.empty()) record.note += ", " + std::to_string(r.renamed.size()) + " renamed";
+    finish(std::move(record));
   }
 
   // Whether the simplify stage runs: switched on, with a target (points always have one).

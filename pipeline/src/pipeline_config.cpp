@@ -6,6 +6,7 @@
 #include "meshprep/core/io.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/preprocess/enhance/enhance_parameters.h"
+#include "meshprep/preprocess/patches/patches_parameters.h"
 #include "meshprep/preprocess/reconstruct/reconstruct_parameters.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
 #include "meshprep/preprocess/repair/repair_parameters.h"
@@ -186,6 +187,44 @@ std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {
   return keys;
 }
 
+std::vector<Key> patches_keys(PipelineConfig::Patches& p) {
+  const PatchParameters& info = patch_parameters();
+  std::vector<Key> keys;
+  keys.push_back(number_or_auto("patches", info.feature_angle_deg, p.params.feature_angle_deg));
+  keys.push_back(flag("patches", info.resegment, p.params.resegment));
+  keys.push_back({"patches", info.renames.key, "an object {\"OLD\": \"NEW\", ...}", info.renames.help,
+                  [&p](const Json& v) {
+                    if (!v.is_object()) throw BadValue{"expected an object {\"OLD\": \"NEW\"}, not " + shown(v)};
+                    p.params.renames.clear();
+                    for (const auto& [from, to] : v.items()) {
+                      if (!to.is_string()) throw BadValue{"the new name of '" + from + "' is not a string: " + shown(to)};
+                      p.params.renames.emplace_back(from, to.get<std::string>());
+                    }
+                  },
+                  [&p] {
+                    OrderedJson renames = OrderedJson::object();
+                    for (const auto& [from, to] : p.params.renames) renames[from] = to;
+                    return renames;
+                  }});
+  keys.push_back({"patches", info.merges.key, "an array of arrays of names [[\"A\", \"B\"], ...]", info.merges.help,
+                  [&p](const Json& v) {
+                    const auto names = [](const Json& list) {
+                      if (!list.is_array()) return false;
+                      for (const Json& name : list)
+                        if (!name.is_string()) return false;
+                      return true;
+                    };
+                    if (!v.is_array()) throw BadValue{"expected an array of arrays of names, not " + shown(v)};
+                    p.params.merges.clear();
+                    for (const Json& list : v) {
+                      if (!names(list)) throw BadValue{"expected an array of names, not " + shown(list)};
+                      p.params.merges.push_back(list.get<std::vector<std::string>>());
+                    }
+                  },
+                  [&p] { return OrderedJson(p.params.merges); }});
+  return keys;
+}
+
 std::vector<Key> simplify_keys(PipelineConfig::Simplify& s) {
   const SimplifyParameters& info = simplify_parameters();
   const Range ratio_range = info.keep_ratio.range;
@@ -303,7 +342,7 @@ std::vector<Key> verdict_keys(TetThresholds& t) {
 
 std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c) {
   return {{"repair", repair_keys(c.repair)},           {"reconstruct", reconstruct_keys(c.reconstruct)},
-          {"simplify", simplify_keys(c.simplify)},
+          {"patches", patches_keys(c.patches)},             {"simplify", simplify_keys(c.simplify)},
           {"smooth", smooth_keys(c.smooth)},                {"enhance", enhance_keys(c.enhance)},
           {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
           {"improve", improve_keys(c.improve)},             {"verdict", verdict_keys(c.verdict)}};

@@ -5,8 +5,12 @@
 #include "meshprep/report/html_report.h"
 #include "meshprep/report/number_format.h"
 #include "meshprep/report/surface_picture.h"
+#include "meshprep/core/patch_names.h"
+#include "meshprep/quality/patch_table.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace meshprep {
@@ -206,6 +210,37 @@ std::string tet_section(const PipelineResult& r, const PipelineConfig& config) {
          html::svg_histogram(q.scaled_jacobian_per_tet, jacobian) + "</div>\n";
 }
 
+// The boundary patches: a row each (the input's area, the final one's and its change, the tets'
+// faces), and the final surface coloured by patch.
+std::string patch_section(const PipelineResult& r) {
+  const std::vector<PatchRow> input = patch_table(r.input_surface), final_rows = patch_table(r.surface);
+  if (final_rows.empty()) return {};
+  std::map<int, double> input_area;
+  for (const PatchRow& row : input) input_area[row.tag] = row.area;
+  std::map<int, std::size_t> tet_faces;
+  if (r.tets)
+    for (const int tag : r.tets->boundary_tags) ++tet_faces[tag];
+  std::string out = "<h2>Boundary patches</h2>\n<p>" + std::to_string(final_rows.size()) +
+                    " patches: the named sets of faces where a solver fixes, loads or heats the part. Every stage "
+                    "keeps each face's patch; the tets carry them as boundary tags with these names.</p>\n"
+                    "<div class=\"tables\">\n<table>\n" +
+                    row({"patch", "faces", "area", "change from the input", "normal spread", "tet faces"}, "th");
+  for (const PatchRow& patch : final_rows) {
+    const auto before = input_area.find(patch.tag);
+    const std::string change = before != input_area.end() && before->second > 0
+                                   ? format_fixed(100 * (patch.area / before->second - 1), 3) + " %"
+                                   : "-";
+    const auto faces = tet_faces.find(patch.tag);
+    out += row({patch.name, std::to_string(patch.faces), figure(patch.area), change, degrees(patch.normal_spread_deg),
+                faces != tet_faces.end() ? std::to_string(faces->second) : "-"});
+  }
+  if (r.tets)  // a block's sides and bottom
+    for (const auto& [tag, count] : tet_faces)
+      if (std::none_of(final_rows.begin(), final_rows.end(), [&](const PatchRow& patch) { return patch.tag == tag; }))
+        out += row({tag_name(r.tets->boundary_names, tag, "boundary"), "-", "-", "-", "-", std::to_string(count)});
+  return out + "</table>\n</div>\n" + patch_picture_html(r.surface);
+}
+
 std::string config_section(const PipelineConfig& config) {
   return "<h2>Configuration</h2>\n<details><summary>The effective configuration (pipeline.json replays the run "
          "with <code>--config</code>)</summary>\n<pre>" +
@@ -224,7 +259,7 @@ std::string pipeline_report_html(const PipelineResult& r, const PipelineConfig& 
   return html::page_start(title) + "<h1>meshprep pipeline: <span class=\"file\">" + escape(r.input) + "</span></h1>\n" +
          headline(r, config) + "<p>" + escape(intro.str()) + "</p>\n" + readiness_section(r, config) + "<h2>The final surface</h2>\n" +
          surface_picture_html(r.surface, r.final_quality) + stage_table(r) + shape_histograms(r) +
-         tet_section(r, config) + config_section(config) +
+         patch_section(r) + tet_section(r, config) + config_section(config) +
          html::page_end("meshprep " MESHPREP_VERSION " pipeline report.");
 }
 

@@ -2,8 +2,12 @@
 
 #include "meshprep/pipeline/pipeline_outputs.h"
 
+#include "meshprep/core/patch_names.h"
 #include "meshprep/quality/json_values.h"
+#include "meshprep/quality/patch_table.h"
 #include "meshprep/report/report_writers.h"
+
+#include <map>
 
 namespace meshprep {
 namespace {
@@ -37,6 +41,41 @@ Json quality_json(const QualityReport& report) {
   return json;
 }
 
+// One row per boundary patch: the input's and the final surface's faces and area (each stage
+// keeps its patches: the change is the stages' own), its normal spread, and the tets' boundary
+// faces with its tag. A block's sides and bottom are patches of the tets alone.
+Json patches_json(const PipelineResult& result) {
+  std::map<int, Json> rows;
+  const auto row_of = [&rows](int tag, const std::string& name) -> Json& {
+    Json& json = rows[tag];
+    json["tag"] = tag;
+    json["name"] = name;
+    return json;
+  };
+  for (const PatchRow& row : patch_table(result.input_surface)) {
+    Json& json = row_of(row.tag, row.name);
+    json["input_faces"] = row.faces;
+    json["input_area"] = json_number(row.area);
+  }
+  for (const PatchRow& row : patch_table(result.surface)) {
+    Json& json = row_of(row.tag, row.name);
+    json["faces"] = row.faces;
+    json["area"] = json_number(row.area);
+    json["normal_spread_deg"] = json_number(row.normal_spread_deg);
+    if (json.contains("input_area") && json["input_area"].get<double>() > 0)
+      json["area_change_percent"] = json_number(100 * (row.area / json["input_area"].get<double>() - 1));
+  }
+  if (result.tets) {
+    std::map<int, std::size_t> tet_faces;
+    for (const int tag : result.tets->boundary_tags) ++tet_faces[tag];
+    for (const auto& [tag, count] : tet_faces)
+      row_of(tag, tag_name(result.tets->boundary_names, tag, "boundary"))["tet_boundary_faces"] = count;
+  }
+  Json table = Json::array();
+  for (auto& [tag, row] : rows) table.push_back(std::move(row));
+  return table;
+}
+
 }  // namespace
 
 Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config) {
@@ -53,6 +92,7 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   json["stages"] = stages;
   json["input_quality"] = quality_json(result.input_quality);
   json["quality"] = quality_json(result.final_quality);
+  json["patches"] = patches_json(result);
   Json tets;
   tets["enabled"] = config.tetrahedralize.enabled;
   tets["format"] = config.tetrahedralize.format;

@@ -32,6 +32,8 @@ td.ok { color: #2e7d32; } td.problem { color: #c62828; font-weight: bold; }
 figure { margin: 0; } figcaption { font-size: 13px; color: #444; margin-top: 4px; }
 .pictures { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; }
 .pictures img { border: 1px solid #ddd; max-width: 100%; height: auto; }
+.patch-key { display: inline-block; margin: 2px 12px 2px 0; }
+.swatch { display: inline-block; width: 12px; height: 12px; margin-right: 4px; vertical-align: middle; }
 pre { background: #f6f6f6; padding: 8px; font-size: 12px; overflow-x: auto; }
 footer { margin-top: 28px; color: #888; font-size: 12px; }
 )";

@@ -10,7 +10,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "meshprep/core/patch_names.h"
+
 #include <cmath>
+#include <map>
 
 namespace meshprep {
 namespace {
@@ -75,23 +78,50 @@ std::vector<SurfaceView> report_views(const TriangleSoup& soup, int width, int h
   return views;
 }
 
-std::string surface_picture_html(const TriangleSoup& soup, const QualityReport& report) {
-  if (soup.triangles.empty() || report.face_shapes.size() != soup.triangles.size()) return {};
-  std::vector<double> ratios;
-  ratios.reserve(report.face_shapes.size());
-  for (const TriangleShape& shape : report.face_shapes) ratios.push_back(shape.radius_ratio);
+// The views of `soup`, face f in colours[f], as <figure>s; `what` completes the alt text.
+std::string figures(const TriangleSoup& soup, const std::vector<std::array<std::uint8_t, 3>>& colours,
+                    const std::string& what) {
   const std::vector<SurfaceView> views = report_views(soup, kPictureWidth, kPictureHeight);
-  std::string out = "<div class=\"pictures\">\n";
+  std::string out;
   for (std::size_t i = 0; i < views.size(); ++i) {
-    const RgbImage image = render_surface(soup, ratios, kGoodRatio, kBadRatio, views[i]);
+    const RgbImage image = render_surface(soup, colours, views[i]);
     out += "<figure><img width=\"" + std::to_string(image.width) + "\" height=\"" + std::to_string(image.height) +
-           "\" alt=\"the surface, view " + std::to_string(i + 1) + ", coloured by radius ratio\" src=\"data:image/png;base64," +
+           "\" alt=\"the surface, view " + std::to_string(i + 1) + ", " + what + "\" src=\"data:image/png;base64," +
            detail::base64(encode_png(image)) + "\"><figcaption>" + (views.size() > 1 ? (i == 0 ? "Front" : "Back") : "View") +
            " (principal axes, tilted " + format_number(kTiltDeg, 2) + "\u00b0)</figcaption></figure>\n";
   }
-  return out + "<figure>" + legend() +
+  return out;
+}
+
+std::string surface_picture_html(const TriangleSoup& soup, const QualityReport& report) {
+  if (soup.triangles.empty() || report.face_shapes.size() != soup.triangles.size()) return {};
+  std::vector<std::array<std::uint8_t, 3>> colours;
+  colours.reserve(report.face_shapes.size());
+  for (const TriangleShape& shape : report.face_shapes) colours.push_back(quality_colour(shape.radius_ratio, kGoodRatio, kBadRatio));
+  return "<div class=\"pictures\">\n" + figures(soup, colours, "coloured by radius ratio") + "<figure>" + legend() +
          "<figcaption>Faces coloured by radius ratio R / (2 r): 1 is equilateral; 3 and above, red, is a sliver. "
          "Rendered by meshprep (z-buffer, hidden surfaces removed).</figcaption></figure>\n</div>\n";
+}
+
+std::string patch_picture_html(const TriangleSoup& soup) {
+  if (soup.triangles.empty() || soup.patches.size() != soup.triangles.size()) return {};
+  std::map<int, int> index;  // tag -> colour index, in tag order
+  for (const int tag : soup.patches) index.emplace(tag, 0);
+  int next = 0;
+  for (auto& [tag, i] : index) i = next++;
+  std::vector<std::array<std::uint8_t, 3>> colours;
+  colours.reserve(soup.patches.size());
+  for (const int tag : soup.patches) colours.push_back(category_colour(index[tag]));
+  std::string keys;
+  for (const auto& [tag, i] : index) {
+    const auto c = category_colour(i);
+    keys += "<span class=\"patch-key\"><span class=\"swatch\" style=\"background:rgb(" + std::to_string(c[0]) + "," +
+            std::to_string(c[1]) + "," + std::to_string(c[2]) + ")\"></span>" +
+            html::escape(tag_name(soup.patch_names, tag, "patch")) + "</span>\n";
+  }
+  return "<div class=\"pictures\">\n" + figures(soup, colours, "coloured by boundary patch") + "<figure>" + keys +
+         "<figcaption>Faces coloured by boundary patch" + (index.size() > 12 ? " (twelve colours, repeated)" : "") +
+         ".</figcaption></figure>\n</div>\n";
 }
 
 }  // namespace meshprep

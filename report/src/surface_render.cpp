@@ -141,6 +141,28 @@ RgbImage render_surface(const TriangleSoup& soup, const std::vector<double>& fac
   if (face_values.size() != soup.triangles.size())
     throw InvalidInput("render_surface: " + std::to_string(face_values.size()) + " values for " +
                        std::to_string(soup.triangles.size()) + " faces");
+  std::vector<std::array<std::uint8_t, 3>> colours;
+  colours.reserve(face_values.size());
+  for (const double value : face_values) colours.push_back(quality_colour(value, good, bad));
+  return render_surface(soup, colours, view);
+}
+
+std::array<std::uint8_t, 3> category_colour(int index) {
+  // Twelve hues that stay apart, dark enough that shading keeps them apart too (ColorBrewer's
+  // "Paired" re-ordered so that neighbours in the list differ most).
+  static constexpr std::uint8_t kHues[][3] = {{31, 120, 180}, {227, 26, 28},  {51, 160, 44},   {255, 127, 0},
+                                              {106, 61, 154}, {177, 89, 40},  {166, 206, 227}, {251, 154, 153},
+                                              {178, 223, 138}, {253, 191, 111}, {202, 178, 214}, {255, 255, 153}};
+  constexpr int count = sizeof kHues / sizeof kHues[0];
+  const auto& c = kHues[((index % count) + count) % count];
+  return {c[0], c[1], c[2]};
+}
+
+RgbImage render_surface(const TriangleSoup& soup, const std::vector<std::array<std::uint8_t, 3>>& face_colours,
+                        const SurfaceView& view) {
+  if (face_colours.size() != soup.triangles.size())
+    throw InvalidInput("render_surface: " + std::to_string(face_colours.size()) + " colours for " +
+                       std::to_string(soup.triangles.size()) + " faces");
   if (view.width < 1 || view.height < 1 || view.width > 8192 || view.height > 8192)
     throw InvalidInput("render_surface: the image must be between 1 x 1 and 8192 x 8192 pixels");
   const Camera camera = camera_of(view);
@@ -154,7 +176,7 @@ RgbImage render_surface(const TriangleSoup& soup, const std::vector<double>& fac
     const Vec3 normal = (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]);
     const double n = normal.norm();
     const double shade = 0.3 + 0.7 * (n > 0 ? std::abs(normal.dot(light)) / n : 0.0);
-    const std::array<std::uint8_t, 3> base = quality_colour(face_values[f], good, bad);
+    const std::array<std::uint8_t, 3>& base = face_colours[f];
     const Colour colour{shade * base[0], shade * base[1], shade * base[2]};
     const Vec2 q[3] = {p.pixels[t[0]], p.pixels[t[1]], p.pixels[t[2]]};
     const double z[3] = {p.depth[t[0]], p.depth[t[1]], p.depth[t[2]]};

@@ -31,7 +31,7 @@ namespace meshprep {
 
 /// What one stage did, measured on its output against the pipeline's input surface.
 struct StageRecord {
-  std::string name;            ///< reconstruct, check, simplify, smooth, enhance, quality, tetrahedralize, improve
+  std::string name;            ///< reconstruct, repair, check, patches, simplify, smooth, enhance, quality, tetrahedralize, improve
   bool ran = false;            ///< false: switched off or nothing to do (see note)
   std::string note;            ///< one line: why it was skipped, or what it found
   double seconds = 0;          ///< the stage's own work (not the measurement)

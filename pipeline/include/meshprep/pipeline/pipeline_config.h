@@ -4,7 +4,7 @@
 /// stage libraries' own (reconstruct.h, adaptive_reconstruction.h, simplify.h, smooth.h, enhance.h, report.h,
 /// tetrahedralize.h) except where a field says otherwise; docs/pipeline.md lists every key.
 ///
-/// The file is one JSON object of sections ("repair", "reconstruct", "simplify", "smooth", "enhance",
+/// The file is one JSON object of sections ("repair", "reconstruct", "patches", "simplify", "smooth", "enhance",
 /// "quality", "tetrahedralize", "improve", "verdict"), each an object of keys; any subset may be given. A section "run"
 /// (what meshprep wrote into pipeline.json about the run: input, versions) is ignored, so a
 /// pipeline.json replays its run. Unknown sections and keys are rejected with the list of valid
@@ -15,6 +15,7 @@
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/enhance/enhance.h"
+#include "meshprep/preprocess/patches/patches.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
 #include "meshprep/preprocess/repair/repair.h"
 #include "meshprep/preprocess/simplify/simplify.h"
@@ -48,6 +49,12 @@ struct PipelineConfig {
       return p;
     }
   } reconstruct;
+  /// The boundary patches (patches.h): the file's groups, else the regions the creases bound.
+  /// feature_angle_deg unset ("auto") is the enhancement's crease angle (enhance.feature_angle_deg),
+  /// so that every patch border is a crease the enhancement keeps.
+  struct Patches {
+    PatchParams params;
+  } patches;
   struct Simplify {
     bool enabled = true;
     /// Fraction of the faces kept (params.keep_ratio when the stage runs). Empty = automatic:

@@ -37,6 +37,14 @@ std::array<std::uint8_t, 3> quality_colour(double value, double good, double bad
 RgbImage render_surface(const TriangleSoup& soup, const std::vector<double>& face_values, double good, double bad,
                         const SurfaceView& view);
 
+/// Render `soup` with face f in face_colours[f] (shaded), as above.
+/// \throws InvalidInput as above, for face_colours of the wrong size.
+RgbImage render_surface(const TriangleSoup& soup, const std::vector<std::array<std::uint8_t, 3>>& face_colours,
+                        const SurfaceView& view);
+
+/// The colour of the index-th category (a patch): twelve distinct hues, repeated beyond.
+std::array<std::uint8_t, 3> category_colour(int index);
+
 /// The image as a PNG file's bytes (libpng).
 std::vector<std::uint8_t> encode_png(const RgbImage& image);
 
@@ -48,5 +56,9 @@ std::vector<SurfaceView> report_views(const TriangleSoup& soup, int width, int h
 /// The report's pictures of `soup` coloured by radius ratio (report.face_shapes), as an HTML
 /// fragment: inline PNG images (data URIs) with a caption and the colour legend.
 std::string surface_picture_html(const TriangleSoup& soup, const QualityReport& report);
+
+/// The pictures of `soup` coloured by boundary patch (soup.patches), with a legend naming each
+/// patch, as an HTML fragment; empty when the surface has no patches.
+std::string patch_picture_html(const TriangleSoup& soup);
 
 }  // namespace meshprep
