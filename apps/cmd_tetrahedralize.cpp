@@ -14,6 +14,8 @@
 #include "meshprep/fem/fem_check.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/prepare_plc.h"
+#include "meshprep/preprocess/patches/patches.h"
+#include "meshprep/preprocess/patches/patches_parameters.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/solver_targets.h"
 #include "meshprep/fem/tet_quality.h"
@@ -37,6 +39,7 @@ struct TetOptions {
   TetParams params;
   ThresholdFlags thresholds;
   ImproveFlags improve;
+  PatchParams patches;
   double extrude_depth = 0, extrude_relative = 0;
   bool binary = false, fem_check = false;
   unsigned timeout = 0;
@@ -87,10 +90,21 @@ int run_tetrahedralize(const TetOptions& o) {
   ensure_distinct_files({o.input}, {o.output, o.json, o.diagnose});
   check_tet_params(o.params);  // a bound TetGen cannot meet is bad usage, whatever the surface
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
-  const TriangleSoup soup = read_soup(o.input);
+  TriangleSoup soup = read_soup(o.input);
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
+  // The boundary patches, as the pipeline finds them, become the tets' named boundary tags. A
+  // surface the halfedge mesh cannot hold has none: the readiness check below says why.
+  MeshBuildReport build;
+  mesh_from_soup(soup, &build);
+  if (build.dropped_faces.empty()) {
+    try {
+      json["patches"] = to_json(find_patches(soup, o.patches));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(o.input + ": " + e.what());
+    }
+  }
   SurfacePlc plc = prepare_surface(o, soup, json);
   json["switches"] = tetgen_switches(o.params, 0);
 
@@ -189,6 +203,8 @@ Action add_tetrahedralize_command(CLI::App& app) {
   cmd->add_option("--timeout", o->timeout,
                   "Stop TetGen after this many seconds (exit 1, nothing written); Ctrl-C stops it too (exit 130)")
       ->check(CLI::Range(1u, 1000000u));
+  add_auto_parameter(*cmd, patch_parameters().feature_angle_deg, o->patches.feature_angle_deg);
+  add_patch_edits(*cmd, o->patches);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results as JSON to FILE ('-' = stdout)");
   return [o] { return run_tetrahedralize(*o); };

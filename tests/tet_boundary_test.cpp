@@ -65,5 +65,29 @@ TEST(TetBoundary, SingleTetFacesPointAway) {
   }
 }
 
+// The boundary as a surface: the faces of one tet each, their tags as patches with the names, on
+// the points they use.
+TEST(TetBoundary, TheBoundarySurfaceKeepsTheTagsAsNamedPatches) {
+  TetMesh mesh = test::cube_tets(2);
+  mesh.boundary_names = {{1, "x_min"}, {4, "Load"}};
+  const TriangleSoup surface = boundary_surface(mesh);
+  EXPECT_EQ(surface.triangles.size(), mesh.boundary_faces.size());
+  EXPECT_LT(surface.points.size(), mesh.points.size());  // the cube's inner point is left out
+  ASSERT_EQ(surface.patches.size(), surface.triangles.size());
+  std::map<int, std::size_t> faces, expected;
+  for (const int tag : surface.patches) ++faces[tag];
+  for (const int tag : mesh.boundary_tags) ++expected[tag];
+  EXPECT_EQ(faces, expected);
+  EXPECT_EQ(surface.patch_names, mesh.boundary_names);
+  double volume = 0;  // outward faces: the divergence theorem gives the cube's volume
+  for (const Triangle& t : surface.triangles)
+    volume += surface.points[t[0]].dot(surface.points[t[1]].cross(surface.points[t[2]])) / 6;
+  EXPECT_NEAR(volume, 1.0, 1e-12);
+  // All tag 1 without a name: nothing to keep.
+  TetMesh plain = test::cube_tets(1);
+  plain.boundary_tags.assign(plain.boundary_tags.size(), 1);
+  EXPECT_TRUE(boundary_surface(plain).patches.empty());
+}
+
 }  // namespace
 }  // namespace meshprep

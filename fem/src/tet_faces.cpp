@@ -3,6 +3,7 @@
 #include "meshprep/fem/tet_boundary.h"
 
 #include <algorithm>
+#include <map>
 
 namespace meshprep {
 namespace detail {
@@ -52,6 +53,37 @@ std::vector<std::uint32_t> TetFaces::single_tet_faces(const std::vector<bool>* e
 }
 
 }  // namespace detail
+
+TriangleSoup boundary_surface(const TetMesh& mesh) {
+  // A face's tag by its corners (in any rotation and orientation).
+  const auto key = [](Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::map<Triangle, int> tag_of;
+  for (std::size_t f = 0; f < mesh.boundary_faces.size() && f < mesh.boundary_tags.size(); ++f)
+    tag_of.emplace(key(mesh.boundary_faces[f]), mesh.boundary_tags[f]);
+  TriangleSoup soup;
+  soup.triangles = tet_boundary(mesh);
+  std::vector<std::uint32_t> index(mesh.points.size(), UINT32_MAX);
+  for (const Triangle& t : soup.triangles)
+    for (const std::uint32_t v : t) index[v] = 0;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (index[v] == 0) {
+      index[v] = static_cast<std::uint32_t>(soup.points.size());
+      soup.points.push_back(mesh.points[v]);
+    }
+  soup.patches.reserve(soup.triangles.size());
+  for (Triangle& t : soup.triangles) {
+    const auto tag = tag_of.find(key(t));
+    soup.patches.push_back(tag == tag_of.end() ? 1 : tag->second);
+    for (std::uint32_t& v : t) v = index[v];
+  }
+  const bool untagged = std::all_of(soup.patches.begin(), soup.patches.end(), [](int tag) { return tag == 1; });
+  if (untagged && !mesh.boundary_names.count(1)) soup.patches.clear();
+  else soup.patch_names = mesh.boundary_names;
+  return soup;
+}
 
 std::vector<Triangle> tet_boundary(const TetMesh& mesh) {
   const std::vector<std::uint32_t> once = detail::TetFaces(mesh.tets).single_tet_faces();

@@ -15,4 +15,10 @@ namespace meshprep {
 /// \pre every tet index is < mesh.points.size() and there are fewer than 2^30 tets.
 std::vector<Triangle> tet_boundary(const TetMesh& mesh);
 
+/// The boundary surface of `mesh` as a soup on the points its faces use (in point order): the
+/// faces of tet_boundary, each with the tag mesh.boundary_faces gives it (1 if none) as its patch,
+/// and mesh.boundary_names as the patches' names. A mesh whose boundary is all tag 1 without a
+/// name has no patches. Interface faces (between two tets) are left out.
+TriangleSoup boundary_surface(const TetMesh& mesh);
+
 }  // namespace meshprep
