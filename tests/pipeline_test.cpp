@@ -140,6 +140,8 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
               0.02 * static_cast<double>(r.stages[2].faces_before));
   EXPECT_EQ(r.final_quality.boundary_loops, 1u);
   ASSERT_TRUE(r.tets && r.extrusion_depth);
+  // The block's boundary is named for a solver: the terrain on top, its walls, its base.
+  EXPECT_EQ(r.tets->boundary_names, (TagNames{{1, "top"}, {2, "sides"}, {3, "bottom"}}));
   expect_verdict_follows_the_figures(r);
   // The block's volume: over each top triangle, its projected area times its mean height above
   // the base (exact for a piecewise-linear top).
