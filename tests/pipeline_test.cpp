@@ -1,4 +1,5 @@
 #include "meshprep/pipeline/pipeline.h"
+#include "meshprep/quality/patch_table.h"
 #include "meshprep/pipeline/pipeline_outputs.h"
 
 #include "meshprep/core/errors.h"
@@ -8,6 +9,8 @@
 #include "scratch_dir.h"
 
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -123,6 +126,35 @@ TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
   ASSERT_TRUE(r.final_quality.reference);
   EXPECT_LT(r.final_quality.reference->hausdorff_relative, 0.01);  // half the faces of a unit sphere
   EXPECT_EQ(r.final_quality.genus, 0);
+}
+
+// A box's 6 sides and a cylinder's 3 faces are its patches; through simplification to 30 % and
+// the enhancement each keeps its area within 0.5 % (issue 44), and the tets' boundary carries them
+// by name.
+TEST_F(Pipeline, EachPatchKeepsItsAreaToTheTets) {
+  PipelineConfig config = small_config();
+  config.simplify.ratio = 0.3;
+  for (const auto& [part, count] : {std::pair{test::subdivided_cube(8), 6u}, {test::cylinder_with_fan_caps(48), 3u}}) {
+    const PipelineResult r = run_pipeline(mesh_file(part, "part.off"), config);
+    const std::vector<PatchRow> before = patch_table(r.input_surface), after = patch_table(r.surface);
+    ASSERT_EQ(before.size(), count);
+    ASSERT_EQ(after.size(), count);
+    for (std::size_t k = 0; k < count; ++k) {
+      EXPECT_EQ(after[k].name, before[k].name);
+      EXPECT_NEAR(after[k].area, before[k].area, 5e-3 * before[k].area) << before[k].name;
+    }
+    ASSERT_TRUE(r.tets);
+    std::map<int, double> tet_area;
+    for (std::size_t f = 0; f < r.tets->boundary_faces.size(); ++f) {
+      const Triangle& t = r.tets->boundary_faces[f];
+      const std::vector<Vec3>& p = r.tets->points;
+      tet_area[r.tets->boundary_tags[f]] += 0.5 * (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm();
+    }
+    for (const PatchRow& row : after) {
+      EXPECT_NEAR(tet_area[row.tag], row.area, 1e-9 * row.area) << row.name;  // -Y: the surface's own faces
+      EXPECT_EQ(r.tets->boundary_names.at(row.tag), row.name);
+    }
+  }
 }
 
 TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {

@@ -67,6 +67,12 @@ struct alignas(64) EdgeRecord {
   char complete = 0;  // 0: cost is a lower bound (quadric part only, or no placement yet)
 };
 
+// A collapse along a patch border drops a border vertex only where the border turns by at most
+// 1 degree there: a CAD part's straight edges simplify, its curved ones keep their vertices. A
+// 48-gon's rim (7.5 degrees a vertex) lost 4.4 % of its cap's area to chords at 30 %; dropping a
+// vertex that turns by 1 degree cuts off a sliver of l^2 sin(1 deg) / 2, under 1 % of l^2.
+const double kBorderStraightCosine = std::cos(1.0 * M_PI / 180.0);
+
 class Collapser {
  public:
   Collapser(TriMesh& mesh, const SimplifyParams& params, const CollapseScales& scales, std::vector<Quadric>& quadrics,
@@ -257,22 +263,36 @@ class Collapser {
     return borders;
   }
 
+  // Whether the patch border runs straight on through v (its two border edges turn by at most
+  // kBorderTurnDeg): only there may a collapse along the border drop v.
+  bool border_straight_at(VertexHandle v) const {
+    Vec3 sides[2];
+    int found = 0;
+    for (const HalfedgeHandle out : mesh_.voh_range(v))
+      if (patches_.border(mesh_.edge_handle(out)) && found < 2) sides[found++] = point(mesh_.to_vertex_handle(out)) - point(v);
+    return found == 2 && sides[0].dot(sides[1]) <= -kBorderStraightCosine * sides[0].norm() * sides[1].norm();
+  }
+
   // The end point that must stay: a boundary vertex collapsing with an interior one keeps its
-  // place; so does a vertex on a patch border, and along a border either end keeps its place
-  // (the border polyline loses a vertex, never moves: each face keeps its side of it).
+  // place; so does a vertex on a patch border, and along a border the end that is not dropped
+  // (border_straight_at): the border loses a vertex where it runs straight, and never moves, so
+  // each face keeps its side of it.
   VertexHandle pinned_end(VertexHandle a, VertexHandle b) const {
     const bool boundary_a = mesh_.is_boundary(a), boundary_b = mesh_.is_boundary(b);
     if (boundary_a != boundary_b) return boundary_a ? a : b;
     if (!patches_.present()) return VertexHandle();
     const bool border_a = border_edges(a) > 0, border_b = border_edges(b) > 0;
-    if (border_a != border_b || border_a) return border_a && !border_b ? a : b;
+    if (border_a != border_b) return border_a ? a : b;
+    if (border_a) return border_straight_at(a) ? b : a;
     return VertexHandle();
   }
 
   // Whether collapsing a-b keeps every patch border: an edge between two border vertices may
-  // collapse only if it is a border edge itself (else the patch between would be pinched).
+  // collapse only if it is a border edge itself (else the patch between would be pinched) and
+  // the border runs straight through one of its ends.
   bool keeps_patch_borders(EdgeHandle e, VertexHandle a, VertexHandle b) const {
-    return !patches_.present() || patches_.border(e) || border_edges(a) == 0 || border_edges(b) == 0;
+    if (!patches_.present() || border_edges(a) == 0 || border_edges(b) == 0) return true;
+    return patches_.border(e) && (border_straight_at(a) || border_straight_at(b));
   }
 
   // Queue the edge with an estimate of its cost: Bending's quadric part (cheap, exact) with the
