@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev libpng-dev
   zlib1g-dev  # the .vtu reader inflates vtkZLibDataCompressor data
+  libhdf5-dev  # the heavy data of .xdmf files (the serial build; CMake's FindHDF5 finds it)
   libgmp-dev  # the exact stage of quality/'s orientation predicates
   python3
   ccache  # the builds of scripts/build.sh and run-tests.sh reuse what an earlier build compiled
