@@ -15,6 +15,7 @@
 #include "meshprep/pipeline/pipeline_outputs.h"
 #include "meshprep/quality/quality_gate.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -139,8 +140,13 @@ int run_pipeline_command(const PipelineOptions& o) {
   if (!gate.empty()) failed_conditions(gate, pipeline_summary(PipelineResult{}, config));
   if (!std::filesystem::exists(o.input)) throw IoError(o.input + ": cannot read: no such file");
   std::vector<std::string> outputs = {o.json};
-  for (const std::string& name : pipeline_output_names(config, config.tetrahedralize.enabled))
-    outputs.push_back((std::filesystem::path(o.outdir) / name).string());
+  std::vector<std::string> covered;  // the files of the outputs listed (files_of: tets.node stands for tets.ele too)
+  for (const std::string& name : pipeline_output_names(config, config.tetrahedralize.enabled)) {
+    const std::string file = (std::filesystem::path(o.outdir) / name).string();
+    if (std::find(covered.begin(), covered.end(), file) != covered.end()) continue;
+    for (const std::string& sibling : files_of(file)) covered.push_back(sibling);
+    outputs.push_back(file);
+  }
   ensure_distinct_files({o.input, o.config}, outputs);
   check_output_dir(o.outdir);  // before the work: an unusable folder fails at once (made when written)
 

@@ -97,6 +97,12 @@ assert a == b and a['simplify']['ratio'] == 0.3" && ok || bad "print-config = pi
 expect_exit "fandisk inp" 0 $?
 [ -s fandisk/tets.inp ] && [ ! -e fandisk/tets.msh ] && ok || bad "tets.msh not replaced by tets.inp: $(ls fandisk)"
 readback fandisk tets.inp
+# TetGen's three files replace it (and the check for clashing outputs takes .node, .ele and .face
+# as one output).
+"$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --format node --quiet 2> err.txt
+expect_exit "fandisk node" 0 $?
+[ -s fandisk/tets.node ] && [ -s fandisk/tets.ele ] && [ -s fandisk/tets.face ] && [ ! -e fandisk/tets.inp ] && ok ||
+  bad "tets.inp not replaced by TetGen's files: $(ls fandisk)"
 
 # ---- a terrain from the bundled points (a coarse grid, for speed), as VTK XML -----------------
 echo '{"reconstruct": {"resolution": [80, 80]}}' > coarse.json
