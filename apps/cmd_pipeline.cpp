@@ -1,5 +1,5 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
-//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2]
+//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
@@ -230,8 +230,8 @@ Action add_pipeline_command(CLI::App& app) {
                   "An open height field (terrain) becomes a block with its base this far below its lowest point "
                   "(default: 2 % of the bounding-box diagonal)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node")
-      ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));
+  cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node, xdmf")
+      ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node", "xdmf"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
   add_patch_edits(*cmd, o->patch_edits);
