@@ -15,6 +15,9 @@ packages=(
   ccache  # the builds of scripts/build.sh and run-tests.sh reuse what an earlier build compiled
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy
+  # tests/python/test_xdmf_dolfinx.py (pytest): dolfinx reads our .xdmf and solves on it, h5py
+  # reads its HDF5 data
+  python3-pytest python3-dolfinx python3-h5py
   # the browser that renders the HTML reports in the tests
   chromium
   # clang and its libFuzzer runtime, for scripts/fuzz.sh
