@@ -11,7 +11,9 @@
 //                 XInclude (xpointer(/Xdmf/Domain/Grid/Geometry): the first grid's, dolfinx's own
 //                 default), and the boundary tags as a scalar Attribute on cells
 //                 -> x.h5:/MeshTags/facet_tags/topology (F x 3 int64), .../Values (F x 1 int32)
-//   "cell_tags"   the tets again, with their regions -> x.h5:/MeshTags/cell_tags/...
+//   "cell_tags"   the tets again, with their regions -> x.h5:/MeshTags/cell_tags/Values, and
+//                 .../topology, a hard link to /Mesh/mesh/topology (the same tets in the same
+//                 order: 40 % of the .h5 for the femur's 204 k tets, not written twice)
 // dolfinx's read_meshtags finds each tagged entity by its vertices, so any order of faces or cells
 // works. Node order: XDMF's Tetrahedron is VTK's, whose positive volume is TetMesh's
 // ((p1-p0).((p2-p0)x(p3-p0)) > 0); triangles are outward, as in TetMesh. The DataItems also state
@@ -69,6 +71,14 @@ class HeavyDataWriter {
     if (!set.close()) fail(path);
   }
 
+  // A second name for the dataset at `path` (an HDF5 hard link, its groups created on the way).
+  void link(const std::string& path, const std::string& second_path) {
+    const Hdf5Handle links(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+    if (!links.valid() || H5Pset_create_intermediate_group(links.get(), 1) < 0 ||
+        H5Lcreate_hard(file_.get(), path.c_str(), file_.get(), second_path.c_str(), links.get(), H5P_DEFAULT) < 0)
+      fail(second_path);
+  }
+
   // Closing the file flushes it: a full disk shows here.
   void close() {
     if (!file_.close()) fail("the HDF5 file");
@@ -106,7 +116,8 @@ void write_heavy_data(const TetMesh& mesh, const std::string& file, const std::s
               faces.data());
   out.dataset("/MeshTags/facet_tags/Values", H5T_STD_I32LE, H5T_NATIVE_INT, mesh.boundary_tags.size(), 1,
               mesh.boundary_tags.data());
-  out.dataset("/MeshTags/cell_tags/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, mesh.tets.size(), 4, tets.data());
+  // The cell tags are on every tet in mesh order: their topology is the mesh's, stored once.
+  out.link("/Mesh/mesh/topology", "/MeshTags/cell_tags/topology");
   out.dataset("/MeshTags/cell_tags/Values", H5T_STD_I32LE, H5T_NATIVE_INT, mesh.tet_regions.size(), 1,
               mesh.tet_regions.data());
   out.close();

@@ -100,6 +100,7 @@ def test_dolfinx_reads_the_mesh_and_its_tags(block):
         num_tets = h5["/Mesh/mesh/topology"].shape[0]
         facet_values = h5["/MeshTags/facet_tags/Values"][:].ravel()
         cell_values = h5["/MeshTags/cell_tags/Values"][:].ravel()
+        assert h5["/MeshTags/cell_tags/topology"] == h5["/Mesh/mesh/topology"]  # one dataset, two names
     assert mesh.topology.index_map(0).size_global == num_points
     assert mesh.topology.index_map(3).size_global == num_tets
     assert len(cell_values) == num_tets and set(cell_values) == {1}
