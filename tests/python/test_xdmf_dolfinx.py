@@ -1,10 +1,11 @@
 """meshprep's XDMF + HDF5 output in dolfinx and meshio (issue 44, point 5).
 
 `meshprep tetrahedralize` meshes a small terrain closed into a block (an open height field
-extruded: boundary tags 1 top, 2 sides, 3 base, fem/extrude.h) into block.xdmf + block.h5; then
+extruded: boundary patches "top", "sides" and "bottom", fem/extrude.h) into block.xdmf + block.h5;
+then
 - dolfinx reads it (XDMFFile.read_mesh, read_meshtags "facet_tags" and "cell_tags") with the counts
-  and tags of the HDF5 data (h5py), and the tag names in the XDMF;
-- dolfinx solves -laplace(u) = 1 with u = 0 on the base (tag 3), du/dn = 0 elsewhere: by the
+  and tags of the HDF5 data (h5py), and the patches' tags are found by their names in the XDMF;
+- dolfinx solves -laplace(u) = 1 with u = 0 on the bottom, du/dn = 0 elsewhere: by the
   maximum principle u >= 0, and comparing u with the slab solutions w(z) = s (H - s / 2),
   s = z - base, for the lowest and highest top H, its maximum lies between Hmin^2 / 2 and Hmax^2 / 2
   (w is a sub- or supersolution: -laplace(w) = 1, w = 0 on the base, dw/dn = 0 on the vertical
@@ -41,7 +42,6 @@ sys.path.insert(0, str(TESTS))
 from fem_readback import read_xdmf_grid  # noqa: E402
 
 BINARY = os.environ.get("MESHPREP_BIN", str(TESTS.parent / "build" / "bin" / "meshprep"))
-TOP, SIDE, BASE = 1, 2, 3  # fem/extrude.h
 BASE_DEPTH = 0.5  # the base lies this far below the lowest point of the terrain
 
 
@@ -108,13 +108,13 @@ def test_dolfinx_reads_the_mesh_and_its_tags(block):
     exterior = dmesh.exterior_facet_indices(mesh.topology)
     assert np.array_equal(np.sort(facet_tags.indices), np.sort(exterior))
     assert sorted(facet_tags.values) == sorted(facet_values)
-    assert set(facet_tags.values) == {TOP, SIDE, BASE}
+    names = tag_names(path, "facet_tags")
+    assert {"sides", "bottom"} <= set(names) and set(facet_tags.values) == set(names.values()), names
     assert np.array_equal(np.sort(cell_tags.indices), np.arange(num_tets))
     assert set(cell_tags.values) == {1}
-    # The base facets lie in the plane BASE_DEPTH below the terrain's lowest point.
-    base_z = dmesh.compute_midpoints(mesh, 2, facet_tags.indices[facet_tags.values == BASE])[:, 2]
+    # The bottom's facets lie in the plane BASE_DEPTH below the terrain's lowest point.
+    base_z = dmesh.compute_midpoints(mesh, 2, facet_tags.indices[facet_tags.values == names["bottom"]])[:, 2]
     assert np.allclose(base_z, -0.1 - BASE_DEPTH, atol=1e-12)
-    assert tag_names(path, "facet_tags") == {"boundary_1": TOP, "boundary_2": SIDE, "boundary_3": BASE}
     assert tag_names(path, "cell_tags") == {"region_1": 1}
 
 
@@ -122,7 +122,8 @@ def test_dolfinx_solves_poisson_on_it(block):
     path, points = block
     mesh, facet_tags, _ = read_with_dolfinx(path)
     space = fem.FunctionSpace(mesh, ("Lagrange", 1))
-    base_dofs = fem.locate_dofs_topological(space, 2, facet_tags.indices[facet_tags.values == BASE])
+    bottom = tag_names(path, "facet_tags")["bottom"]
+    base_dofs = fem.locate_dofs_topological(space, 2, facet_tags.indices[facet_tags.values == bottom])
     assert len(base_dofs) > 0
     u, v = ufl.TrialFunction(space), ufl.TestFunction(space)
     a = ufl.inner(ufl.grad(u), ufl.grad(v)) * ufl.dx
