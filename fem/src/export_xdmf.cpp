@@ -22,9 +22,9 @@
 //
 // The names of the tags: one <Information Name="<name>" Value="<tag>"/> per tag in the grid of the
 // tags ("facet_tags": boundary_names, "cell_tags": region_names), so that a dolfinx script finds a
-// patch's tag by its name with an XML parser; a tag without a name in the mesh gets its default
-// (patch_names.h, tag_name: "boundary_<t>", "region_<r>"). Names follow patch_names.h's rule, so
-// they need no XML escaping.
+// patch's tag by its name with an XML parser; each tag in use is named, by its default name
+// (patch_names.h, tag_name: "boundary_<t>", "region_<r>") where the mesh has none. Names follow
+// patch_names.h's rule (write_tet_mesh checks them), so they need no XML escaping.
 //
 // Both files are written as temporaries, the .h5 inside the .xdmf's write, then renamed .h5 first,
 // as the TetGen writer does with its three files: a failure while writing leaves neither behind.
@@ -123,20 +123,11 @@ void write_heavy_data(const TetMesh& mesh, const std::string& file, const std::s
   out.close();
 }
 
-// The names written for a tag grid: the mesh's names, and the default name of each tag in use
-// that has none.
+// The name of each tag in use: the mesh's, else the default one (as the Gmsh writer names them).
 TagNames names_to_write(const TagNames& names, const std::vector<int>& tags, const char* prefix) {
-  TagNames all = names;
-  for (const int tag : distinct_tags(tags)) all.emplace(tag, tag_name(names, tag, prefix));
-  return all;
-}
-
-void check_names(const TagNames& names, const std::string& path) {
-  for (const auto& [tag, name] : names) {
-    if (tag < 1) throw InvalidInput(path + ": cannot export: the name '" + name + "' is given to tag " +
-                                    std::to_string(tag) + " (tags are >= 1)");
-    if (!is_valid_name(name)) throw InvalidInput(path + ": cannot write the patch name '" + name + "': " + kNameRule);
-  }
+  TagNames used;
+  for (const int tag : distinct_tags(tags)) used.emplace(tag, tag_name(names, tag, prefix));
+  return used;
 }
 
 class LightDataWriter {
@@ -197,8 +188,6 @@ class LightDataWriter {
 }  // namespace
 
 void write_xdmf(const TetMesh& mesh, const std::string& path) {
-  check_names(mesh.boundary_names, path);
-  check_names(mesh.region_names, path);
   const std::filesystem::path h5_path = std::filesystem::path(path).replace_extension(".h5");
   write_file_atomically(path, [&](std::ostream& out) {
     LightDataWriter(out, h5_path.filename().string()).write(mesh);

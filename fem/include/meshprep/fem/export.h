@@ -39,7 +39,6 @@ struct TetExportOptions {
 ///         repeated within an element, a region or tag < 1, a name against patch_names.h's rule,
 ///         a non-finite coordinate; for .inp also
 ///         a boundary face that is not an outward face of any tet);
-///         for .xdmf a tag name against patch_names.h's rule;
 ///         IoError if a file cannot be written (nothing is left behind).
 void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {});
 
