@@ -46,6 +46,7 @@ bool is_character_device(const std::string& path) {
 
 std::vector<std::string> files_of(const std::string& path) {
   const std::string extension = extension_of(path);
+  if (extension == "xdmf") return {path, fs::path(path).replace_extension(".h5").string()};
   if (extension != "node" && extension != "ele") return {path};
   std::vector<std::string> files;
   for (const char* sibling : {".node", ".ele", ".face"}) files.push_back(fs::path(path).replace_extension(sibling).string());

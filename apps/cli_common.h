@@ -31,7 +31,7 @@ class WorkFailed : public std::runtime_error {
 void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 
 /// The files a mesh path stands for: TetGen's .node or .ele stands for its .node, .ele and .face;
-/// any other path for itself.
+/// an .xdmf for itself and the .h5 beside it (what write_tet_mesh writes); any other path for itself.
 std::vector<std::string> files_of(const std::string& path);
 
 /// Checks the files of a run before any work: no output may be an input (outputs never clobber

@@ -79,7 +79,7 @@ Action add_convert_command(CLI::App& app) {
   auto o = std::make_shared<ConvertOptions>();
   CLI::App* cmd = app.add_subcommand("convert",
                                      "Convert a surface mesh between OFF, OBJ, PLY and STL, or a tet mesh from .msh .vtu .vtk "
-                                     ".mesh .node to those and .inp (format from the extension)");
+                                     ".mesh .node .xdmf to those and .inp (format from the extension)");
   cmd->add_option("input", o->input, "Input surface or tet mesh (a TetGen mesh by its .node or .ele)")->required();
   auto* output = cmd->add_option("-o,--output", o->output, "Output mesh of the same kind");
   cmd->add_option("output", o->output, "The output, as the second argument instead of -o")->excludes(output);

@@ -38,7 +38,7 @@ int run_improve(const ImproveOptions& o) {
   ensure_distinct_files({o.input}, {o.output, o.json});
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
   if (!is_tet_mesh_path(o.input))
-    throw InvalidInput(o.input + ": not a tet mesh file (.msh .vtu .vtk .mesh .node .ele); for a surface use "
+    throw InvalidInput(o.input + ": not a tet mesh file (.msh .vtu .vtk .mesh .node .ele .xdmf); for a surface use "
                        "meshprep tetrahedralize");
   TetReadReport read;
   TetMesh tets = read_tet_mesh(o.input, &read);
@@ -82,8 +82,8 @@ Action add_improve_command(CLI::App& app) {
   auto o = std::make_shared<ImproveOptions>();
   CLI::App* cmd = app.add_subcommand(
       "improve", "Improve a tet mesh's worst tets (flips, smoothing, new inner vertices); the boundary is kept exactly");
-  cmd->add_option("tets", o->input, "Tet mesh: .msh (2.2, 4.1) .vtu .vtk .mesh .node/.ele")->required();
-  cmd->add_option("-o,--output", o->output, "Improved tet mesh: .msh .vtu .vtk .mesh .node .inp (format from the extension)")
+  cmd->add_option("tets", o->input, "Tet mesh: .msh (2.2, 4.1) .vtu .vtk .mesh .node/.ele .xdmf")->required();
+  cmd->add_option("-o,--output", o->output, "Improved tet mesh: .msh .vtu .vtk .mesh .node .inp .xdmf (format from the extension)")
       ->required();
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
       ->check(CLI::IsMember({"4.1", "2.2"}))

@@ -1,5 +1,5 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
-//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node] [--msh-version 4.1|2.2]
+//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
@@ -15,6 +15,7 @@
 #include "meshprep/pipeline/pipeline_outputs.h"
 #include "meshprep/quality/quality_gate.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -139,8 +140,13 @@ int run_pipeline_command(const PipelineOptions& o) {
   if (!gate.empty()) failed_conditions(gate, pipeline_summary(PipelineResult{}, config));
   if (!std::filesystem::exists(o.input)) throw IoError(o.input + ": cannot read: no such file");
   std::vector<std::string> outputs = {o.json};
-  for (const std::string& name : pipeline_output_names(config, config.tetrahedralize.enabled))
-    outputs.push_back((std::filesystem::path(o.outdir) / name).string());
+  std::vector<std::string> covered;  // the files of the outputs listed (files_of: tets.node stands for tets.ele too)
+  for (const std::string& name : pipeline_output_names(config, config.tetrahedralize.enabled)) {
+    const std::string file = (std::filesystem::path(o.outdir) / name).string();
+    if (std::find(covered.begin(), covered.end(), file) != covered.end()) continue;
+    for (const std::string& sibling : files_of(file)) covered.push_back(sibling);
+    outputs.push_back(file);
+  }
   ensure_distinct_files({o.input, o.config}, outputs);
   check_output_dir(o.outdir);  // before the work: an unusable folder fails at once (made when written)
 
@@ -224,8 +230,8 @@ Action add_pipeline_command(CLI::App& app) {
                   "An open height field (terrain) becomes a block with its base this far below its lowest point "
                   "(default: 2 % of the bounding-box diagonal)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node")
-      ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node"}));
+  cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node, xdmf")
+      ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node", "xdmf"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
   add_patch_edits(*cmd, o->patch_edits);

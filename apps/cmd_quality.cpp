@@ -1,6 +1,6 @@
 // meshprep quality MESH [--reference REF] [--json FILE|-] [--csv FILE] [--vtk FILE] [--html FILE]
 //                       [--fail-on CONDITIONS] [--worst N] [--samples N] [--threads N]
-// MESH is a surface (.off .obj .ply .stl) or a tet mesh (.msh .vtu .vtk .mesh .node .ele); a tet
+// MESH is a surface (.off .obj .ply .stl) or a tet mesh (.msh .vtu .vtk .mesh .node .ele .xdmf); a tet
 // mesh has the text summary and --json (tet_report.h), not the surface-only outputs.
 #include "cli_common.h"
 #include "tet_report.h"
@@ -112,7 +112,7 @@ Action add_quality_command(CLI::App& app) {
   auto o = std::make_shared<QualityOptions>();
   CLI::App* cmd = app.add_subcommand(
       "quality", "Measure a surface mesh (topology, triangle shape, distance to a reference) or a tet mesh (tet shape, boundary)");
-  cmd->add_option("mesh", o->input, "Surface mesh (.off .obj .ply .stl) or tet mesh (.msh .vtu .vtk .mesh .node .ele)")
+  cmd->add_option("mesh", o->input, "Surface mesh (.off .obj .ply .stl) or tet mesh (.msh .vtu .vtk .mesh .node .ele .xdmf)")
       ->required();
   cmd->add_option("--reference", o->reference,
                   "Reference surface: adds Hausdorff/RMS/mean distance and volume change (surfaces only)");

@@ -177,7 +177,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("tetrahedralize", "Tetrahedralise a closed surface with TetGen and export it for a solver");
   cmd->add_option("surface", o->input, "Closed surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output,
-                  "Tet mesh: .msh .vtu .vtk .mesh .node .inp (format from the extension)")->required();
+                  "Tet mesh: .msh .vtu .vtk .mesh .node .inp .xdmf (format from the extension)")->required();
   const TetParameters& p = tet_parameters();
   add_parameter(*cmd, p.radius_edge, o->params.radius_edge);
   add_parameter(*cmd, p.min_dihedral_deg, o->params.min_dihedral_deg);

@@ -9,11 +9,15 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev libpng-dev
   zlib1g-dev  # the .vtu reader inflates vtkZLibDataCompressor data
+  libhdf5-dev  # the heavy data of .xdmf files (the serial build; CMake's FindHDF5 finds it)
   libgmp-dev  # the exact stage of quality/'s orientation predicates
   python3
   ccache  # the builds of scripts/build.sh and run-tests.sh reuse what an earlier build compiled
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy
+  # tests/python/test_xdmf_dolfinx.py (pytest): dolfinx reads our .xdmf and solves on it, h5py
+  # reads its HDF5 data
+  python3-pytest python3-dolfinx python3-h5py
   # the browser that renders the HTML reports in the tests
   chromium
   # clang and its libFuzzer runtime, for scripts/fuzz.sh

@@ -55,7 +55,7 @@ assert abs(a['tet_quality']['volume'] - b['tet_quality']['volume']) < 1e-12, (a[
 assert a['tet_quality']['min_dihedral_deg']['min'] == j['tet_quality']['min_dihedral_deg']['min']
 " && ok || bad "improve: figures, boundary or volume"
 "$bin" improve cube.off -o x.msh > /dev/null 2> err.txt; expect_exit "improve a surface" 2 $?
-grep -qx "meshprep: error: cube.off: not a tet mesh file (.msh .vtu .vtk .mesh .node .ele); for a surface use meshprep tetrahedralize" err.txt &&
+grep -qx "meshprep: error: cube.off: not a tet mesh file (.msh .vtu .vtk .mesh .node .ele .xdmf); for a surface use meshprep tetrahedralize" err.txt &&
   [ ! -e x.msh ] && ok || bad "improve a surface: the message or a file written"
 "$bin" improve missing.msh -o x.msh > /dev/null 2> err.txt; expect_exit "improve a missing file" 2 $?
 printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\n' > broken.msh
@@ -166,7 +166,8 @@ expect_exit "repair half top --max-hole 0.5" 1 $?
 
 # Real TetGen output in every format, read back by meshio and gmsh with the counts and the volume.
 mkdir -p formats
-for out in formats/c41.msh formats/c22.msh formats/c.vtu formats/c.vtk formats/c.mesh formats/c.node formats/c.inp; do
+for out in formats/c41.msh formats/c22.msh formats/c.vtu formats/c.vtk formats/c.mesh formats/c.node formats/c.inp \
+           formats/c.xdmf; do
   extra=""; [ "$out" = formats/c22.msh ] && extra="--msh-version 2.2"
   "$bin" tetrahedralize cube.off -o $out --max-volume 0.01 --min-dihedral 12 $extra --json formats.json > /dev/null 2> err.txt ||
     bad "write $out"
@@ -198,7 +199,7 @@ grep -q "cube.off: cannot extrude" err.txt && ok || bad "extrusion error names t
 
 # `quality` on tet meshes: the tets and volume tetrahedralize reported, the closed boundary of the
 # cube (TetGen may split its 12 triangles, tag 1), the surface-only options refused.
-for mesh in formats/c41.msh formats/c.vtu formats/c41b.msh formats/c.node; do
+for mesh in formats/c41.msh formats/c.vtu formats/c41b.msh formats/c.node formats/c.xdmf; do
   rm -f q.json
   "$bin" quality $mesh --json q.json > stdout.txt 2> err.txt
   expect_exit "quality $mesh" 0 $?
@@ -242,6 +243,14 @@ python3 -c "
 import json; a = json.load(open('conv.json')); b = json.load(open('orig.json'))
 assert a['tet_quality'] == b['tet_quality'] and a['boundary']['faces'] == b['boundary']['faces'], (a, b)
 assert a['input']['format'] == 'msh 2.2 binary', a" && ok || bad "convert keeps the mesh"
+# ... and to XDMF + HDF5 and back: the same report, the .h5 beside the .xdmf.
+"$bin" convert formats/c41.msh conv.xdmf > /dev/null 2> err.txt; expect_exit "convert msh -> xdmf" 0 $?
+"$bin" convert conv.xdmf conv2.msh > /dev/null 2> err.txt; expect_exit "convert xdmf -> msh" 0 $?
+"$bin" quality conv2.msh --json conv2.json > /dev/null 2> err.txt
+python3 -c "
+import json; a = json.load(open('conv2.json')); b = json.load(open('orig.json'))
+assert a['tet_quality'] == b['tet_quality'] and a['boundary'] == b['boundary'], (a, b)" && [ -s conv.h5 ] && ok ||
+  bad "convert through xdmf keeps the mesh"
 "$bin" convert broken.msh conv2.vtu > /dev/null 2> err.txt; expect_exit "convert a broken tet mesh" 2 $?
 [ ! -e conv2.vtu ] && ok || bad "convert wrote from a broken input"
 

@@ -97,6 +97,18 @@ assert a == b and a['simplify']['ratio'] == 0.3" && ok || bad "print-config = pi
 expect_exit "fandisk inp" 0 $?
 [ -s fandisk/tets.inp ] && [ ! -e fandisk/tets.msh ] && ok || bad "tets.msh not replaced by tets.inp: $(ls fandisk)"
 readback fandisk tets.inp
+# XDMF for dolfinx: two files, tets.xdmf and tets.h5.
+"$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --format xdmf --quiet 2> err.txt
+expect_exit "fandisk xdmf" 0 $?
+[ -s fandisk/tets.xdmf ] && [ -s fandisk/tets.h5 ] && [ ! -e fandisk/tets.inp ] && ok ||
+  bad "tets.inp not replaced by tets.xdmf and tets.h5: $(ls fandisk)"
+readback fandisk tets.xdmf tets.h5
+# TetGen's three files replace the pair (and the check for clashing outputs takes .node, .ele and
+# .face, or .xdmf and .h5, as one output).
+"$bin" pipeline "$src/examples/data/fandisk.off" -o fandisk --ratio 0.3 --format node --quiet 2> err.txt
+expect_exit "fandisk node" 0 $?
+[ -s fandisk/tets.node ] && [ -s fandisk/tets.ele ] && [ -s fandisk/tets.face ] && [ ! -e fandisk/tets.xdmf ] &&
+  [ ! -e fandisk/tets.h5 ] && ok || bad "tets.xdmf and tets.h5 not replaced by TetGen's files: $(ls fandisk)"
 
 # ---- a terrain from the bundled points (a coarse grid, for speed), as VTK XML -----------------
 echo '{"reconstruct": {"resolution": [80, 80]}}' > coarse.json

@@ -1,6 +1,7 @@
 // The tetrahedral mesh exporters: third-party read-back (meshio, gmsh) through fem_readback.py,
 // checks of our own output, and the error contract (InvalidInput / IoError, no partial files).
 #include "meshprep/core/errors.h"
+#include "hdf5_file.h"  // fem/src: the HDF5 handle that closes itself
 #include "meshprep/fem/export.h"
 #include "tet_test_meshes.h"
 #include "scratch_dir.h"
@@ -19,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace meshprep {
@@ -66,13 +68,13 @@ class FemExportTest : public test::ScratchDirTest {
     return names;
   }
 
-  // Every format and variant, one file each (the .node also writes .ele and .face).
+  // Every format and variant, one file each (the .node also writes .ele and .face, the .xdmf .h5).
   void write_all_formats(const TetMesh& mesh) const {
     write_tet_mesh(mesh, path("cube_v41_ascii.msh"));
     write_tet_mesh(mesh, path("cube_v41_binary.msh"), {MshVersion::V41, true});
     write_tet_mesh(mesh, path("cube_v22_ascii.msh"), {MshVersion::V22, false});
     write_tet_mesh(mesh, path("cube_v22_binary.msh"), {MshVersion::V22, true});
-    for (const char* extension : {".vtu", ".vtk", ".mesh", ".node", ".inp"})
+    for (const char* extension : {".vtu", ".vtk", ".mesh", ".node", ".inp", ".xdmf"})
       write_tet_mesh(mesh, path(std::string("cube") + extension));
   }
 
@@ -139,7 +141,7 @@ TEST_F(FemExportTest, WritesEveryFileAndNothingElse) {
   write_all_formats(test::cube_tets(2));
   const std::set<std::string> expected{"cube_v41_ascii.msh", "cube_v41_binary.msh", "cube_v22_ascii.msh",
                                        "cube_v22_binary.msh", "cube.vtu", "cube.vtk", "cube.mesh", "cube.node",
-                                       "cube.ele", "cube.face", "cube.inp"};
+                                       "cube.ele", "cube.face", "cube.inp", "cube.xdmf", "cube.h5"};
   EXPECT_EQ(directory_entries(), expected);
 }
 
@@ -285,7 +287,7 @@ TEST_F(FemExportTest, UnknownExtensionListsTheSupportedOnes) {
       ADD_FAILURE() << name << ": no exception";
     } catch (const InvalidInput& e) {
       const std::string message = e.what();
-      for (const char* extension : {".msh", ".vtu", ".vtk", ".mesh", ".node", ".inp"})
+      for (const char* extension : {".msh", ".vtu", ".vtk", ".mesh", ".node", ".inp", ".xdmf"})
         EXPECT_NE(message.find(extension), std::string::npos) << message;
     }
   }
@@ -298,7 +300,7 @@ TEST_F(FemExportTest, ExtensionIsCaseInsensitive) {
 }
 
 TEST_F(FemExportTest, MissingDirectoryIsAnIoErrorAndWritesNothing) {
-  for (const char* name : {"cube.msh", "cube.vtu", "cube.vtk", "cube.mesh", "cube.node", "cube.inp"})
+  for (const char* name : {"cube.msh", "cube.vtu", "cube.vtk", "cube.mesh", "cube.node", "cube.inp", "cube.xdmf"})
     EXPECT_THROW(write_tet_mesh(test::cube_tets(1), path(std::string("missing/") + name)), IoError) << name;
   EXPECT_TRUE(directory_entries().empty());
 }
@@ -313,7 +315,7 @@ TEST_F(FemExportTest, TetgenFailureLeavesNoPartialFileSet) {
 
 TEST_F(FemExportTest, MalformedMeshesAreInvalidInput) {
   auto expect_invalid = [&](TetMesh mesh, const char* what) {
-    for (const char* name : {"m.msh", "m.vtu", "m.vtk", "m.mesh", "m.node", "m.inp"})
+    for (const char* name : {"m.msh", "m.vtu", "m.vtk", "m.mesh", "m.node", "m.inp", "m.xdmf"})
       EXPECT_THROW(write_tet_mesh(mesh, path(name)), InvalidInput) << what << " " << name;
   };
   const TetMesh good = test::cube_tets(1);
@@ -346,6 +348,107 @@ TEST_F(FemExportTest, MalformedMeshesAreInvalidInput) {
   m.points[4].y() = std::nan("");
   expect_invalid(m, "NaN coordinate");
   EXPECT_TRUE(directory_entries().empty());
+}
+
+// ---- XDMF + HDF5 ----
+
+// A dataset's shape and the size and class of its stored type, read with the HDF5 C API.
+struct DatasetInfo {
+  std::vector<hsize_t> shape;
+  std::size_t type_size = 0;
+  H5T_class_t type_class = H5T_NO_CLASS;
+};
+
+DatasetInfo dataset_info(const std::string& file, const char* dataset) {
+  const detail::Hdf5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  const detail::Hdf5Handle set(h5.valid() ? H5Dopen2(h5.get(), dataset, H5P_DEFAULT) : -1, H5Dclose);
+  if (!set.valid()) return {};
+  const detail::Hdf5Handle space(H5Dget_space(set.get()), H5Sclose);
+  const detail::Hdf5Handle type(H5Dget_type(set.get()), H5Tclose);
+  DatasetInfo info;
+  info.shape.resize(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
+  H5Sget_simple_extent_dims(space.get(), info.shape.data(), nullptr);
+  info.type_size = H5Tget_size(type.get());
+  info.type_class = H5Tget_class(type.get());
+  return info;
+}
+
+// What dolfinx 0.5.2's XDMFFile writes for a mesh and two meshtags (write_mesh, write_meshtags),
+// with the numbers of cube_tets(2); the DataItems also state NumberType and Precision.
+TEST_F(FemExportTest, XdmfHasTheLayoutDolfinxWrites) {
+  write_tet_mesh(test::cube_tets(2), path("cube.xdmf"));
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"cube.xdmf", "cube.h5"}));
+  const std::string xml = read_text(path("cube.xdmf"));
+  for (const char* expected :
+       {"<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n  <Domain>\n"
+        "    <Grid Name=\"mesh\" GridType=\"Uniform\">\n"
+        "      <Topology TopologyType=\"Tetrahedron\" NumberOfElements=\"48\" NodesPerElement=\"4\">\n"
+        "        <DataItem Dimensions=\"48 4\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">"
+        "cube.h5:/Mesh/mesh/topology</DataItem>\n      </Topology>\n"
+        "      <Geometry GeometryType=\"XYZ\">\n"
+        "        <DataItem Dimensions=\"27 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
+        "cube.h5:/Mesh/mesh/geometry</DataItem>\n      </Geometry>\n    </Grid>\n",
+        "    <Grid Name=\"facet_tags\" GridType=\"Uniform\">\n"
+        "      <xi:include xpointer=\"xpointer(/Xdmf/Domain/Grid/Geometry)\" />\n"
+        "      <Topology TopologyType=\"Triangle\" NumberOfElements=\"48\" NodesPerElement=\"3\">\n",
+        "cube.h5:/MeshTags/facet_tags/topology</DataItem>",
+        "      <Attribute Name=\"facet_tags\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+        "        <DataItem Dimensions=\"48 1\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">"
+        "cube.h5:/MeshTags/facet_tags/Values</DataItem>\n",
+        "    <Grid Name=\"cell_tags\" GridType=\"Uniform\">\n",
+        "cube.h5:/MeshTags/cell_tags/Values</DataItem>"})
+    EXPECT_NE(xml.find(expected), std::string::npos) << expected << "\nnot in:\n" << xml;
+  const std::vector<std::tuple<const char*, std::vector<hsize_t>, std::size_t, H5T_class_t>> datasets{
+      {"/Mesh/mesh/geometry", {27, 3}, 8, H5T_FLOAT},
+      {"/Mesh/mesh/topology", {48, 4}, 8, H5T_INTEGER},
+      {"/MeshTags/facet_tags/topology", {48, 3}, 8, H5T_INTEGER},
+      {"/MeshTags/facet_tags/Values", {48, 1}, 4, H5T_INTEGER},
+      {"/MeshTags/cell_tags/topology", {48, 4}, 8, H5T_INTEGER},
+      {"/MeshTags/cell_tags/Values", {48, 1}, 4, H5T_INTEGER}};
+  for (const auto& [dataset, shape, size, type_class] : datasets) {
+    const DatasetInfo info = dataset_info(path("cube.h5"), dataset);
+    EXPECT_EQ(info.shape, shape) << dataset;
+    EXPECT_EQ(info.type_size, size) << dataset;
+    EXPECT_EQ(info.type_class, type_class) << dataset;
+  }
+}
+
+// Every tag in use gets a name: the mesh's, else the default one; a name without a tag in use is
+// not written (as in the Gmsh writer's $PhysicalNames).
+TEST_F(FemExportTest, XdmfNamesEveryTag) {
+  TetMesh mesh = test::cube_tets(1);
+  mesh.boundary_names = {{2, "outlet"}, {9, "spare"}};
+  mesh.region_names = {{1, "steel"}};
+  write_tet_mesh(mesh, path("cube.xdmf"));
+  const std::string xml = read_text(path("cube.xdmf"));
+  const std::size_t facet_grid = xml.find("<Grid Name=\"facet_tags\""), cell_grid = xml.find("<Grid Name=\"cell_tags\"");
+  ASSERT_LT(facet_grid, cell_grid);
+  const std::string facet = xml.substr(facet_grid, cell_grid - facet_grid), cell = xml.substr(cell_grid);
+  for (const char* name : {"<Information Name=\"boundary_1\" Value=\"1\" />", "<Information Name=\"outlet\" Value=\"2\" />",
+                           "<Information Name=\"boundary_6\" Value=\"6\" />"})
+    EXPECT_NE(facet.find(name), std::string::npos) << name << " not in\n" << facet;
+  EXPECT_EQ(facet.find("spare"), std::string::npos) << facet;
+  EXPECT_NE(cell.find("<Information Name=\"steel\" Value=\"1\" />"), std::string::npos) << cell;
+  EXPECT_EQ(cell.find("outlet"), std::string::npos) << cell;
+}
+
+TEST_F(FemExportTest, XdmfRefusesANameAgainstTheRule) {
+  TetMesh mesh = test::cube_tets(1);
+  mesh.boundary_names = {{1, "two words"}};
+  EXPECT_THROW(write_tet_mesh(mesh, path("cube.xdmf")), InvalidInput);
+  EXPECT_TRUE(directory_entries().empty());
+}
+
+// The .h5 cannot be written (a directory has its name), or the .xdmf cannot: neither file appears,
+// and no temporary file is left.
+TEST_F(FemExportTest, XdmfFailureLeavesNoPartialFileSet) {
+  fs::create_directory(path("cube.h5"));
+  EXPECT_THROW(write_tet_mesh(test::cube_tets(1), path("cube.xdmf")), IoError);
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"cube.h5"}));
+  fs::remove(path("cube.h5"));
+  fs::create_directory(path("cube.xdmf"));
+  EXPECT_THROW(write_tet_mesh(test::cube_tets(1), path("cube.xdmf")), IoError);
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"cube.xdmf"}));
 }
 
 // The Abaqus surface needs the face's owning tet: an inward (or interior-less) face is rejected.

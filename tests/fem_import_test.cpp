@@ -1,5 +1,6 @@
 // read_tet_mesh: round trips through every writer, files written by Gmsh and meshio, small
 // hand-written files, malformed files, orientation and the boundary.
+#include "hdf5_file.h"  // fem/src: the HDF5 handle that closes itself
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/import.h"
@@ -213,7 +214,8 @@ INSTANTIATE_TEST_SUITE_P(EveryWriter, RoundTrip,
                                            Variant{"v22_ascii.msh", {MshVersion::V22, false}, true, true},
                                            Variant{"v22_binary.msh", {MshVersion::V22, true}, true, true},
                                            Variant{"cube.mesh", {}, true}, Variant{"cube.node", {}, true},
-                                           Variant{"cube.vtu", {}, false}, Variant{"cube.vtk", {}, false}),
+                                           Variant{"cube.vtu", {}, false}, Variant{"cube.vtk", {}, false},
+                                           Variant{"cube.xdmf", {}, true}),
                          [](const auto& test_info) {
                            std::string name = test_info.param.file;
                            std::replace(name.begin(), name.end(), '.', '_');
@@ -258,7 +260,7 @@ TEST_F(FemImportTest, InterfaceTrianglesAreKept) {
     mesh.boundary_faces.push_back(f);
     mesh.boundary_tags.push_back(7);
   }
-  for (const char* name : {"i.msh", "i.mesh", "i.node"}) {
+  for (const char* name : {"i.msh", "i.mesh", "i.node", "i.xdmf"}) {
     write_tet_mesh(mesh, path(name));
     TetReadReport report;
     const TetMesh read = read_tet_mesh(path(name), &report);
@@ -371,6 +373,8 @@ meshio.write(out + "/v41_binary.msh", mio, file_format="gmsh", binary=True)
 tets = [c for c in m.cells if c.type == "tetra"]
 tet_ref = [r for c, r in zip(m.cells, ref) if c.type == "tetra"]
 meshio.write(out + "/tetgen.node", meshio.Mesh(m.points, tets, cell_data={"tetgen:ref": tet_ref}))
+# One cell type: with several, meshio writes a Mixed topology, which meshprep does not read.
+meshio.write(out + "/meshio.xdmf", meshio.Mesh(m.points, tets, cell_data={"gmsh:physical": tet_ref}))
 )";
 
 TEST_F(FemImportTest, ReadsWhatMeshioWrites) {
@@ -384,7 +388,8 @@ TEST_F(FemImportTest, ReadsWhatMeshioWrites) {
   const std::map<Tetrahedron, int> tets = tets_by_corners(mesh);
   const std::map<Face, int> faces = tagged_faces(mesh);
   for (const char* file : {"zlib.vtu", "zlib64.vtu", "base64.vtu", "ascii.vtu", "v51_binary.vtk", "v51_ascii.vtk",
-                           "v42_binary.vtk", "medit.mesh", "v22_binary.msh", "v41_binary.msh", "tetgen.node"}) {
+                           "v42_binary.vtk", "medit.mesh", "v22_binary.msh", "v41_binary.msh", "tetgen.node",
+                           "meshio.xdmf"}) {
     SCOPED_TRACE(file);
     TetReadReport report;
     const TetMesh read = read_tet_mesh(path(file), &report);
@@ -406,7 +411,7 @@ TEST_F(FemImportTest, ReadsWhatMeshioWrites) {
     if (tags_kept) {
       EXPECT_EQ(tets_by_corners(read), tets);
     }
-    if (std::string(file) == "tetgen.node") {  // meshio writes no .face
+    if (std::string(file) == "tetgen.node" || std::string(file) == "meshio.xdmf") {  // tets only
       EXPECT_EQ(report.untagged_boundary_faces, faces.size());
     } else {
       if (tags_kept) {
@@ -416,6 +421,234 @@ TEST_F(FemImportTest, ReadsWhatMeshioWrites) {
     }
     expect_outward_boundary(read);
   }
+}
+
+// dolfinx 0.5's XDMFFile: a unit cube (2 x 2 x 2 cells of 6 tets), the facets on x = 0 tagged 7,
+// the cells with every vertex at x <= 0.5 tagged 3, written in HDF5 and in ASCII (inline XML).
+const char* const dolfinx_script = R"(
+import sys
+import numpy as np
+from mpi4py import MPI
+from dolfinx import io, mesh as dmesh
+out = sys.argv[1]
+m = dmesh.create_unit_cube(MPI.COMM_WORLD, 2, 2, 2, dmesh.CellType.tetrahedron)
+tdim = m.topology.dim
+m.topology.create_connectivity(tdim - 1, tdim)
+facets = dmesh.locate_entities_boundary(m, tdim - 1, lambda x: np.isclose(x[0], 0.0))
+facet_tags = dmesh.meshtags(m, tdim - 1, facets, np.full(len(facets), 7, dtype=np.int32))
+facet_tags.name = "facet_tags"
+cells = dmesh.locate_entities(m, tdim, lambda x: x[0] <= 0.5 + 1e-12)
+cell_tags = dmesh.meshtags(m, tdim, cells, np.full(len(cells), 3, dtype=np.int32))
+cell_tags.name = "cell_tags"
+for name, encoding in (("hdf", io.XDMFFile.Encoding.HDF5), ("ascii", io.XDMFFile.Encoding.ASCII)):
+    with io.XDMFFile(MPI.COMM_WORLD, out + "/" + name + ".xdmf", "w", encoding=encoding) as f:
+        f.write_mesh(m)
+        f.write_meshtags(facet_tags)
+        f.write_meshtags(cell_tags)
+)";
+
+TEST_F(FemImportTest, ReadsWhatDolfinxWrites) {
+  const std::string python = test::python_with("dolfinx");
+  if (python.empty()) GTEST_SKIP() << "no python3 with dolfinx (apt-get install python3-dolfinx)";
+  write_text(path("write.py"), dolfinx_script);
+  ASSERT_TRUE(succeeds(python + " " + path("write.py") + " " + dir_.string() + " >/dev/null 2>&1"));
+  for (const char* file : {"hdf.xdmf", "ascii.xdmf"}) {
+    SCOPED_TRACE(file);
+    TetReadReport report;
+    const TetMesh mesh = read_tet_mesh(path(file), &report);
+    EXPECT_EQ(report.format, std::string(file) == "hdf.xdmf" ? "xdmf 3.0 hdf5" : "xdmf 3.0 xml");
+    EXPECT_EQ(mesh.points.size(), 27u);
+    EXPECT_EQ(mesh.tets.size(), 48u);
+    expect_unit_box(mesh, file);
+    EXPECT_EQ(report.triangles_in_file, 8u);
+    EXPECT_EQ(report.untagged_boundary_faces, 40u);
+    for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+      const Face& face = mesh.boundary_faces[f];
+      const bool x0 = std::all_of(face.begin(), face.end(), [&](std::uint32_t v) { return mesh.points[v].x() == 0; });
+      EXPECT_EQ(mesh.boundary_tags[f], x0 ? 7 : 1) << "face " << f;
+    }
+    std::size_t tagged = 0;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const bool left = std::all_of(mesh.tets[t].begin(), mesh.tets[t].end(),
+                                    [&](std::uint32_t v) { return mesh.points[v].x() <= 0.5; });
+      EXPECT_EQ(mesh.tet_regions[t], left ? 3 : 1) << "tet " << t;
+      tagged += left;
+    }
+    EXPECT_EQ(tagged, 24u);
+    EXPECT_TRUE(mesh.boundary_names.empty());
+  }
+}
+
+TEST_F(FemImportTest, XdmfReadsBackTheNames) {
+  TetMesh mesh = odd_cube();
+  mesh.boundary_names = {{1, "inlet"}, {6, "Top_Wall"}};
+  mesh.region_names = {{2, "steel"}};
+  write_tet_mesh(mesh, path("named.xdmf"));
+  const TetMesh read = read_tet_mesh(path("named.xdmf"));
+  expect_identical(mesh, read);
+  EXPECT_EQ(read.boundary_names, mesh.boundary_names);  // the default names of tags 2 to 5 left out
+  EXPECT_EQ(read.region_names, mesh.region_names);
+}
+
+// The .h5's name is XML text in the .xdmf: written escaped, read unescaped.
+TEST_F(FemImportTest, XdmfFileNameWithXmlCharacters) {
+  const TetMesh mesh = test::cube_tets(1);
+  const std::string name = "a&b's <1>";
+  write_tet_mesh(mesh, path(name + ".xdmf"));
+  EXPECT_TRUE(std::filesystem::exists(path(name + ".h5")));
+  expect_identical(mesh, read_tet_mesh(path(name + ".xdmf")));
+}
+
+// ---- malformed XDMF ----
+
+// One tet and one tagged face, every value inline (Format="XML").
+const std::string inline_xdmf = R"xdmf(<?xml version="1.0"?>
+<Xdmf Version="3.0" xmlns:xi="http://www.w3.org/2001/XInclude">
+  <Domain>
+    <Grid Name="mesh" GridType="Uniform">
+      <Topology TopologyType="Tetrahedron" NumberOfElements="1" NodesPerElement="4">
+        <DataItem Dimensions="1 4" NumberType="Int" Format="XML">0 1 2 3</DataItem>
+      </Topology>
+      <Geometry GeometryType="XYZ">
+        <DataItem Dimensions="4 3" Format="XML">0 0 0 1 0 0 0 1 0 0 0 1</DataItem>
+      </Geometry>
+    </Grid>
+    <Grid Name="facet_tags" GridType="Uniform">
+      <xi:include xpointer="xpointer(/Xdmf/Domain/Grid/Geometry)" />
+      <Topology TopologyType="Triangle" NumberOfElements="1" NodesPerElement="3">
+        <DataItem Dimensions="1 3" NumberType="Int" Format="XML">0 2 1</DataItem>
+      </Topology>
+      <Attribute Name="facet_tags" AttributeType="Scalar" Center="Cell">
+        <DataItem Dimensions="1" Format="XML">4</DataItem>
+      </Attribute>
+      <Information Name="bottom" Value="4" />
+    </Grid>
+  </Domain>
+</Xdmf>
+)xdmf";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST_F(FemImportTest, HandWrittenXdmfWithInlineData) {
+  write_text(path("one.xdmf"), inline_xdmf);
+  TetReadReport report;
+  const TetMesh mesh = read_tet_mesh(path("one.xdmf"), &report);
+  EXPECT_EQ(report.format, "xdmf 3.0 xml");
+  EXPECT_EQ(mesh.tets, (std::vector<Tetrahedron>{{0, 1, 2, 3}}));
+  EXPECT_EQ(mesh.boundary_faces.front(), (Face{0, 2, 1}));
+  EXPECT_EQ(mesh.boundary_tags, (std::vector<int>{4, 1, 1, 1}));
+  EXPECT_EQ(mesh.boundary_names, (TagNames{{4, "bottom"}}));
+  EXPECT_EQ(mesh.tet_regions, (std::vector<int>{1}));
+  // A name against the rule is made to follow it, and reported.
+  write_text(path("renamed.xdmf"), replaced(inline_xdmf, "Name=\"bottom\"", "Name=\"the &amp; bottom\""));
+  const TetMesh renamed = read_tet_mesh(path("renamed.xdmf"), &report);
+  EXPECT_EQ(renamed.boundary_names, (TagNames{{4, "the_bottom"}}));
+  ASSERT_EQ(report.renamed_names.size(), 1u);
+  EXPECT_EQ(report.renamed_names[0].from, "the & bottom");
+}
+
+TEST_F(FemImportTest, MalformedInlineXdmfIsRefused) {
+  const auto refused = [&](const std::string& from, const std::string& to, const std::string& fragment) {
+    SCOPED_TRACE(from + " -> " + to);
+    expect_refused_text("bad.xdmf", replaced(inline_xdmf, from, to), fragment);
+  };
+  refused("0 1 2 3", "0 1 2 9", "line 5: tetrahedron 1 references node 9, but the nodes are numbered 0 to 3");
+  refused("0 2 1", "0 2 -1", "triangle 1 references node -1");
+  expect_refused_text("bad.xdmf", replaced(replaced(inline_xdmf, "<Xdmf Version", "<Root Version"), "</Xdmf>", "</Root>"),
+                      "not an XDMF file (no <Xdmf> element)");
+  refused("  </Domain>\n", "", "line 22: </Xdmf> found where <Domain> (line 3) is open");
+  refused("</Xdmf>", "", "<Xdmf> is not closed");
+  refused("<Domain>", "<Domain", "malformed XML tag");
+  refused("TopologyType=\"Tetrahedron\"", "TopologyType=\"Hexahedron\"", "TopologyType 'Hexahedron': meshprep reads linear tetrahedra only");
+  refused("TopologyType=\"Tetrahedron\"", "TopologyType=\"Mixed\"", "TopologyType 'Mixed'");
+  refused("NodesPerElement=\"4\"", "NodesPerElement=\"10\"", "not NodesPerElement='10'");
+  refused("Format=\"XML\">0 1 2 3", "Format=\"Binary\">0 1 2 3", "DataItem Format 'Binary' is not read");
+  refused("Dimensions=\"1 4\"", "Dimensions=\"1 3\"", "expected N 4 values");
+  refused("Dimensions=\"1 4\"", "Dimensions=\"1 4 1\"", "is not one or two sizes");
+  refused("<DataItem Dimensions=\"1 4\"", "<DataItem", "the DataItem has no Dimensions");
+  refused("NumberOfElements=\"1\"", "NumberOfElements=\"2\"", "NumberOfElements='2', but the DataItem holds 1 cells");
+  refused("0 0 0 1 0 0 0 1 0 0 0 1", "0 0 0 1 0 0 0 1 0 0 0", "holds 11 values, its Dimensions 12");
+  refused("0 0 0 1 0 0 0 1 0 0 0 1", "0 0 0 1 0 0 0 1 0 0 0 1 5", "holds more than its 12 values");
+  refused("0 0 0 1 0 0 0 1 0 0 0 1", "0 0 0 1 0 0 0 1 0 0 0 nan", "point #4 has a non-finite coordinate (nan)");
+  refused("0 1 2 3</DataItem>", "0 1 2 x</DataItem>", "the DataItem's value 'x' is not an integer");
+  refused("GeometryType=\"XYZ\"", "GeometryType=\"XY\"", "GeometryType XY: a tetrahedral mesh is 3D");
+  refused("GeometryType=\"XYZ\"", "GeometryType=\"X_Y_Z\"", "GeometryType 'X_Y_Z' is not read");
+  refused("<Grid Name=\"mesh\" GridType=\"Uniform\">", "<Grid Name=\"mesh\" GridType=\"Collection\">",
+          "only Uniform grids are read");
+  refused("Format=\"XML\">4<", "Format=\"XML\">4.5<", "the Attribute's value 4.5 is not an integer tag");
+  refused("Format=\"XML\">4<", "Format=\"XML\">-4<", "triangle #1 has tag -4");
+  refused("Dimensions=\"1\" Format=\"XML\">4<", "Dimensions=\"2\" Format=\"XML\">4 4<", "2 values for 1 cells");
+  refused("<Information Name=\"bottom\" Value=\"4\" />", "<Information Name=\"a\" Value=\"4\" /><Information Name=\"b\" Value=\"4\" />",
+          "tag 4 is named twice (a, b)");
+  refused("Center=\"Cell\"", "Center=\"Node\"", "has no <Attribute> with Center=\"Cell\"");
+  refused("0 2 1", "0 1 1", "triangle #1 repeats point #2");
+  expect_refused_text("bad.xdmf", replaced(replaced(inline_xdmf, "<Geometry G", "<Geometr G"), "</Geometry>", "</Geometr>"),
+                      "line 3: no <Grid> with a <Geometry> of its own");
+  refused("Format=\"XML\">0 1 2 3", "Format=\"HDF\">0 1 2 3", "the HDF DataItem '0 1 2 3' is not FILE:/DATASET");
+  refused("Format=\"XML\">0 1 2 3", "ItemType=\"HyperSlab\" Format=\"XML\">0 1 2 3", "ItemType 'HyperSlab' is not read");
+  expect_refused_text("empty.xdmf", "", "empty file");
+}
+
+// A dataset of `type` (H5T_NATIVE_DOUBLE or H5T_NATIVE_INT64) added to an HDF5 file, `dims` of it,
+// filled from `data`; chunked and unwritten when `data` is empty (it then stores no byte).
+void add_dataset(const std::string& file, const char* name, hid_t type, std::vector<hsize_t> dims,
+                 const std::vector<double>& data) {
+  const detail::Hdf5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+  const detail::Hdf5Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+  const detail::Hdf5Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  const hsize_t chunk[2] = {1024, dims.size() > 1 ? dims[1] : 1};
+  if (data.empty()) H5Pset_chunk(properties.get(), static_cast<int>(dims.size()), chunk);
+  const detail::Hdf5Handle set(
+      H5Dcreate2(h5.get(), name, type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Dclose);
+  ASSERT_TRUE(set.valid()) << name;
+  if (!data.empty()) {
+    ASSERT_GE(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), 0);
+  }
+}
+
+std::string read_text(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST_F(FemImportTest, MalformedXdmfHeavyDataIsRefused) {
+  const TetMesh mesh = test::cube_tets(2);
+  const auto fresh = [&] { write_tet_mesh(mesh, path("cube.xdmf")); };
+  fresh();
+  const std::string good = read_text(path("cube.xdmf"));
+  const auto refused = [&](const std::string& from, const std::string& to, const std::string& fragment) {
+    SCOPED_TRACE(from + " -> " + to);
+    expect_refused_text("cube.xdmf", replaced(good, from, to), fragment);
+  };
+  refused("cube.h5:/Mesh/mesh/topology", "cube.h5:/Mesh/mesh/nothing", "line 7: cube.h5:/Mesh/mesh/nothing: no such dataset");
+  refused("Dimensions=\"48 4\"", "Dimensions=\"47 4\"", "the dataset holds 48 x 4 values, its DataItem says 47 x 4");
+  refused("cube.h5:/Mesh/mesh/geometry", "other.h5:/Mesh/mesh/geometry",
+          "line 10: the HDF5 file " + path("other.h5") + " that holds the data does not exist");
+
+  // Indices and types inside the HDF5 file.
+  add_dataset(path("cube.h5"), "/bad_index", H5T_NATIVE_INT64, {48, 4}, std::vector<double>(48 * 4, 99));
+  refused("cube.h5:/Mesh/mesh/topology", "cube.h5:/bad_index", "tetrahedron 1 references node 99, but the nodes are numbered 0 to 26");
+  add_dataset(path("cube.h5"), "/real_topology", H5T_NATIVE_DOUBLE, {48, 4}, std::vector<double>(48 * 4, 1));
+  refused("cube.h5:/Mesh/mesh/topology", "cube.h5:/real_topology", "cube.h5:/real_topology: not integer data");
+  // A dataset that announces a billion rows and stores none: refused before any allocation.
+  add_dataset(path("cube.h5"), "/lying", H5T_NATIVE_INT64, {1000000000, 4}, {});
+  refused("<DataItem Dimensions=\"48 4\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">cube.h5:/Mesh/mesh/topology",
+          "<DataItem Dimensions=\"1000000000 4\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">cube.h5:/lying",
+          "announces 4000000000 values but stores 0 bytes");
+  // A cell tag grid's tet that is not one of the mesh's.
+  add_dataset(path("cube.h5"), "/foreign_tet", H5T_NATIVE_INT64, {48, 4}, std::vector<double>(48 * 4, 0));
+  refused("cube.h5:/MeshTags/cell_tags/topology", "cube.h5:/foreign_tet", "tagged tetrahedron 1 (points 0, 0, 0, 0) is not a cell of the mesh");
+
+  write_text(path("cube.xdmf"), good);
+  write_text(path("cube.h5"), "not HDF5");
+  expect_refused("cube.xdmf", path("cube.h5") + " is not an HDF5 file");
+  std::filesystem::remove(path("cube.h5"));
+  expect_refused("cube.xdmf", "the HDF5 file " + path("cube.h5") + " that holds the data does not exist");
 }
 
 // ---- VTU appended data, written here as VTK's own writer lays it out (meshio cannot) ----
@@ -805,11 +1038,12 @@ TEST_F(FemImportTest, UnknownExtensionAndMissingFile) {
     ADD_FAILURE() << "no exception";
   } catch (const InvalidInput& e) {
     const std::string message = e.what();
-    for (const char* extension : {".msh", ".vtu", ".vtk", ".mesh", ".node", ".ele"})
+    for (const char* extension : {".msh", ".vtu", ".vtk", ".mesh", ".node", ".ele", ".xdmf"})
       EXPECT_NE(message.find(extension), std::string::npos) << message;
   }
   EXPECT_THROW(read_tet_mesh(path("missing.msh")), IoError);
   EXPECT_TRUE(is_tet_mesh_path("a/B.VTU"));
+  EXPECT_TRUE(is_tet_mesh_path("a/B.XDMF"));
   EXPECT_FALSE(is_tet_mesh_path("a/b.off"));
 }
 

@@ -4,21 +4,24 @@
 Usage: fem_readback.py DIR POINTS TETS VOLUME
 
 Each file is read with meshio (.msh 4.1/2.2 ASCII and binary, .vtu, .vtk, .mesh, .inp, .node with
-its .ele sibling) and must have POINTS points, TETS cells of type "tetra", every tet positively
+its .ele sibling, .xdmf with its .h5: each of its grids, see read_xdmf_grid) and must have POINTS points, TETS cells of type "tetra", every tet positively
 oriented and a total signed volume equal to VOLUME (relative tolerance 1e-9). .vtu and .vtk files
 must carry the cell data "region" and the per-tet quality min_dihedral_deg, max_dihedral_deg,
 radius_edge_ratio and scaled_jacobian, equal to the values computed here independently (dihedral
 angles from the two faces' directions normal to each edge, the circumcentre from its linear system,
 Verdict's scaled Jacobian from each corner's edges). .msh files are also checked by Gmsh itself (`gmsh FILE -check`): exit code 0, no warning or error, and the node and
-element counts it prints must match. .ele and .face files are covered by their .node file.
+element counts it prints must match. An .xdmf's tag grids must hold one tag per cell. .ele and .face files are covered by their .node file.
 
 Prints one line per file; exits 1 if any file fails (with the reason), 2 on bad usage.
 """
+import copy
 import itertools
 import pathlib
 import re
 import subprocess
 import sys
+import tempfile
+import xml.etree.ElementTree as ET
 
 import meshio
 import numpy as np
@@ -32,8 +35,9 @@ MESHIO_FORMATS = {
     ".mesh": "medit",
     ".inp": "abaqus",
     ".node": "tetgen",
+    ".xdmf": "xdmf",
 }
-SIBLINGS = {".ele", ".face"}  # read through the .node file
+SIBLINGS = {".ele": ".node", ".face": ".node", ".h5": ".xdmf"}  # read through the other file
 RELATIVE_TOLERANCE = 1e-9
 QUALITY_ARRAYS = ("min_dihedral_deg", "max_dihedral_deg", "radius_edge_ratio", "scaled_jacobian")
 # Differences of the two computations' round-off (their inputs are the same doubles): angles to
@@ -95,10 +99,68 @@ def check_cell_quality(mesh, points, tets):
             raise Failure(f"cell data '{name}' differs from the tets' own by {worst:.3g}")
 
 
+XINCLUDE = "{http://www.w3.org/2001/XInclude}include"
+
+
+def read_xdmf_grid(path, grid_name):
+    """One grid of an XDMF file, read by meshio.
+
+    meshio (5.0 and later) reads XDMF files of one grid only ("Only supports one grid right now");
+    the layout dolfinx writes, and meshprep with it, has three: "mesh", "facet_tags", "cell_tags".
+    So meshio reads a copy of the file that holds the grid alone, with the XInclude of the mesh's
+    geometry replaced by that geometry, without its <Information> elements (meshprep's tag names,
+    which meshio would parse as its own field data), and with its HDF5 paths made absolute.
+    """
+    path = pathlib.Path(path).resolve()
+    tree = ET.parse(path)
+    domain = tree.getroot().find("Domain")
+    grids = {grid.get("Name"): grid for grid in domain.findall("Grid")}
+    if grid_name not in grids:
+        raise Failure(f"no grid named {grid_name!r} (grids {sorted(grids)})")
+    grid = grids[grid_name]
+    for child in list(grid):
+        if child.tag == XINCLUDE:  # xpointer(/Xdmf/Domain/Grid/Geometry): the first grid's
+            grid.insert(list(grid).index(child), copy.deepcopy(domain.find("Grid").find("Geometry")))
+            grid.remove(child)
+        elif child.tag == "Information":
+            grid.remove(child)
+    for other in list(domain):
+        if other is not grid:
+            domain.remove(other)
+    for item in grid.iter("DataItem"):
+        if item.get("Format") == "HDF":
+            file, dataset = item.text.strip().rsplit(":", 1)
+            item.text = f"{path.parent / file}:{dataset}"
+    with tempfile.TemporaryDirectory() as folder:
+        alone = pathlib.Path(folder) / path.name
+        tree.write(alone)
+        return meshio.read(alone, file_format="xdmf")
+
+
+def check_xdmf_tags(path, num_tets):
+    """The tag grids: one value per cell, the cell tags one per tet."""
+    counts = []
+    for name, cell_type in (("facet_tags", "triangle"), ("cell_tags", "tetra")):
+        mesh = read_xdmf_grid(path, name)
+        cells = sum(len(block.data) for block in mesh.cells if block.type == cell_type)
+        values = sum(len(block) for block in mesh.cell_data.get(name, []))
+        if values != cells:
+            raise Failure(f"grid {name}: {values} tags for {cells} {cell_type} cells")
+        counts.append(cells)
+    if counts[1] != num_tets:
+        raise Failure(f"grid cell_tags: {counts[1]} tets, expected {num_tets}")
+    return f"{counts[0]} facet tags, {counts[1]} cell tags"
+
+
 def check_with_meshio(path, file_format, num_points, num_tets, volume):
     """Returns the number of cells of every type (for the Gmsh comparison) and a summary."""
     try:
-        mesh = meshio.read(path, file_format=file_format)
+        if file_format == "xdmf":
+            mesh = read_xdmf_grid(path, "mesh")
+        else:
+            mesh = meshio.read(path, file_format=file_format)
+    except Failure:
+        raise
     except Exception as error:  # meshio raises ReadError, ValueError, KeyError, ...
         raise Failure(f"meshio cannot read it: {type(error).__name__}: {error}") from error
     if len(mesh.points) != num_points:
@@ -145,14 +207,16 @@ def check_with_gmsh(path, num_points, num_cells):
 def check_file(path, num_points, num_tets, volume):
     suffix = path.suffix.lower()
     if suffix in SIBLINGS:
-        if not path.with_suffix(".node").exists():
-            raise Failure("no .node file beside it")
-        return "read with its .node file"
+        if not path.with_suffix(SIBLINGS[suffix]).exists():
+            raise Failure(f"no {SIBLINGS[suffix]} file beside it")
+        return f"read with its {SIBLINGS[suffix]} file"
     if suffix not in MESHIO_FORMATS:
         raise Failure(f"no read-back check for '{suffix}' files")
     num_cells, summary = check_with_meshio(path, MESHIO_FORMATS[suffix], num_points, num_tets, volume)
     if suffix == ".msh":
         summary += "; " + check_with_gmsh(path, num_points, num_cells)
+    if suffix == ".xdmf":
+        summary += " (grid mesh); " + check_xdmf_tags(path, num_tets)
     return summary
 
 

@@ -24,13 +24,14 @@ struct Format {
   Writer write;
 };
 
-const std::array<Format, 6> formats{{
+const std::array<Format, 7> formats{{
     {".msh", [](const TetMesh& m, const std::string& p, const TetExportOptions& o) { detail::write_gmsh(m, p, o); }},
     {".vtu", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtu(m, p); }},
     {".vtk", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtk_legacy(m, p); }},
     {".mesh", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_medit(m, p); }},
     {".node", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_tetgen(m, p); }},
     {".inp", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_abaqus(m, p); }},
+    {".xdmf", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_xdmf(m, p); }},
 }};
 
 std::string lowercase_extension(const std::string& path) {

@@ -17,6 +17,7 @@ void write_vtk_legacy(const TetMesh& mesh, const std::string& path);
 void write_medit(const TetMesh& mesh, const std::string& path);
 void write_tetgen(const TetMesh& mesh, const std::string& path);
 void write_abaqus(const TetMesh& mesh, const std::string& path);
+void write_xdmf(const TetMesh& mesh, const std::string& path);
 
 /// Writes `value` in the shortest form that reads back to the same double (std::to_chars).
 void write_real(std::ostream& out, double value);

@@ -20,18 +20,48 @@ namespace meshprep {
 namespace detail {
 namespace {
 
+// TetGen's .node and .ele (and .face if present), found by name beside `path` (either of the first two).
+TetMesh read_tetgen_files(const std::string& path, TetReadReport* report) {
+  // The siblings' extensions in the case of the one given ("A.NODE" -> "A.ELE").
+  const bool upper_case = std::isupper(static_cast<unsigned char>(std::filesystem::path(path).extension().string()[1]));
+  const auto sibling = [&](std::string extension) {
+    if (upper_case)
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return std::filesystem::path(path).replace_extension(extension).string();
+  };
+  TetgenTexts texts;
+  texts.mesh_name = path;
+  texts.node_name = sibling(".node");
+  texts.ele_name = sibling(".ele");
+  texts.face_name = sibling(".face");
+  const std::string node = read_input_file(texts.node_name);
+  const std::string ele = read_input_file(texts.ele_name);
+  std::string face;
+  texts.node = node;
+  texts.ele = ele;
+  std::error_code ec;
+  if (std::filesystem::exists(texts.face_name, ec)) {
+    face = read_input_file(texts.face_name);
+    texts.face = face;
+  }
+  return read_tet_mesh_from_texts(texts, report);
+}
+
 struct Format {
   const char* extension;
-  std::optional<TetFormat> format;  // none: TetGen's three sibling files
+  std::optional<TetFormat> format;  // none: a format of several files, read by read_files
+  TetMesh (*read_files)(const std::string& path, TetReadReport* report) = nullptr;
 };
 
-const std::array<Format, 6> formats{{
+const std::array<Format, 7> formats{{
     {"msh", TetFormat::Gmsh},
     {"vtu", TetFormat::Vtu},
     {"vtk", TetFormat::VtkLegacy},
     {"mesh", TetFormat::Medit},
-    {"node", std::nullopt},
-    {"ele", std::nullopt},
+    {"node", std::nullopt, read_tetgen_files},
+    {"ele", std::nullopt, read_tetgen_files},
+    {"xdmf", std::nullopt, read_xdmf_file},
 }};
 
 const Format* find_format(const std::string& path) {
@@ -271,31 +301,7 @@ TetMesh read_tet_mesh(const std::string& path, TetReadReport* report) {
                            " for a tetrahedral mesh (reads " + supported + ")");
   }
   if (format->format) return detail::read_tet_mesh_from_bytes(read_input_file(path), *format->format, path, report);
-
-  // The siblings' extensions in the case of the one given ("A.NODE" -> "A.ELE").
-  const bool upper_case = std::isupper(static_cast<unsigned char>(std::filesystem::path(path).extension().string()[1]));
-  const auto sibling = [&](std::string extension) {
-    if (upper_case)
-      std::transform(extension.begin(), extension.end(), extension.begin(),
-                     [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return std::filesystem::path(path).replace_extension(extension).string();
-  };
-  detail::TetgenTexts texts;
-  texts.mesh_name = path;
-  texts.node_name = sibling(".node");
-  texts.ele_name = sibling(".ele");
-  texts.face_name = sibling(".face");
-  const std::string node = read_input_file(texts.node_name);
-  const std::string ele = read_input_file(texts.ele_name);
-  std::string face;
-  texts.node = node;
-  texts.ele = ele;
-  std::error_code ec;
-  if (std::filesystem::exists(texts.face_name, ec)) {
-    face = read_input_file(texts.face_name);
-    texts.face = face;
-  }
-  return detail::read_tet_mesh_from_texts(texts, report);
+  return format->read_files(path, report);
 }
 
 }  // namespace meshprep

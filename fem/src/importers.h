@@ -26,7 +26,7 @@ struct TetFileContent {
   std::vector<Triangle> triangles; ///< indices < points.size()
   std::vector<int> triangle_tags;  ///< one per triangle, as in the file (0 = none)
   std::size_t elements_ignored = 0;
-  TagNames region_names, triangle_names;  ///< names the file gives its tags (Gmsh physical names)
+  TagNames region_names, triangle_names;  ///< names the file gives its tags (Gmsh physical names, XDMF <Information>)
   std::string points_file;  ///< names the points in messages when they are in another file (TetGen's .node)
 };
 
@@ -43,6 +43,14 @@ struct TetgenTexts {
   std::optional<std::string_view> face;  ///< the .face file is optional
 };
 TetFileContent read_tetgen(const TetgenTexts& texts);
+
+/// An XDMF file's XML `data` (named `name` in messages) with the heavy data it names: HDF5 files
+/// are opened relative to `folder` (empty: the working directory); Format="XML" data is read from
+/// `data` itself.
+TetFileContent read_xdmf(const std::string& name, std::string_view data, const std::string& folder);
+
+/// read_tet_mesh on an .xdmf file (and the HDF5 files it names).
+TetMesh read_xdmf_file(const std::string& path, TetReadReport* report);
 
 /// The checks and completions every format shares (see import.h): no tets, non-finite points,
 /// repeated corners, duplicate tets, faces of three tets, stray triangles and negative tags are

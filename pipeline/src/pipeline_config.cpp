@@ -311,8 +311,8 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
                         {"extrude_base_relative", "", "the same depth / bounding-box diagonal", {0, 100, true, false}},
                         t.extrude_base_relative));
   keys.push_back(choice<std::string>("tetrahedralize", "format", t.format,
-                                     {{"msh", "msh"}, {"vtu", "vtu"}, {"mesh", "mesh"}, {"inp", "inp"}, {"node", "node"}},
-                                     "the tet mesh file tets.FORMAT: Gmsh, VTK XML, Medit, Abaqus/CalculiX, TetGen"));
+                                     {{"msh", "msh"}, {"vtu", "vtu"}, {"mesh", "mesh"}, {"inp", "inp"}, {"node", "node"}, {"xdmf", "xdmf"}},
+                                     "the tet mesh file tets.FORMAT: Gmsh, VTK XML, Medit, Abaqus/CalculiX, TetGen, XDMF + HDF5 (dolfinx)"));
   keys.push_back(choice<MshVersion>("tetrahedralize", "msh_version", t.export_options.msh_version,
                                     {{"4.1", MshVersion::V41}, {"2.2", MshVersion::V22}}, "Gmsh format version (msh)"));
   keys.push_back(flag("tetrahedralize", "binary", t.export_options.binary, "binary .msh"));

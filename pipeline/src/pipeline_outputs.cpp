@@ -25,12 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every file name a tet mesh of any format may have (node writes three).
-const std::vector<std::string> kTetFiles = {"tets.msh", "tets.vtu", "tets.mesh", "tets.inp",
-                                            "tets.node", "tets.ele", "tets.face"};
+// Every file name a tet mesh of any format may have (node writes three, xdmf two).
+const std::vector<std::string> kTetFiles = {"tets.msh", "tets.vtu",  "tets.mesh", "tets.inp", "tets.node",
+                                            "tets.ele", "tets.face", "tets.xdmf", "tets.h5"};
 
 std::vector<std::string> tet_files_of(const std::string& format) {
   if (format == "node") return {"tets.node", "tets.ele", "tets.face"};
+  if (format == "xdmf") return {"tets.xdmf", "tets.h5"};
   return {"tets." + format};
 }
 

@@ -11,12 +11,14 @@
 /// | .mesh | Medit (INRIA), MeshVersionFormatted 2 | references on tetrahedra (region) and triangles (tag) |
 /// | .node | TetGen .node/.ele/.face (siblings derived from the name) | attribute on .ele, marker on .face |
 /// | .inp | Abaqus/CalculiX, C3D4 | ELSET `REGION_<r>`; NSET `BOUNDARY_<t>`, element-face *SURFACE `SURF_<t>` |
+/// | .xdmf | XDMF 3 + HDF5 (sibling .h5), dolfinx's XDMFFile layout | grids `facet_tags`, `cell_tags`; names as `<Information>` |
 ///
-/// Node and element numbers are 1-based (0-based point ids in the VTK formats); tet t is element
+/// Node and element numbers are 1-based (0-based point ids in the VTK formats and XDMF); tet t is element
 /// t + 1 where a format numbers elements. Coordinates are written with round-trip precision.
 ///
 /// Every tet is written positively oriented in each format's own node order. Writes are atomic
-/// (a temporary file renamed into place; for .node all three files are written before renaming).
+/// (a temporary file renamed into place; for .node all three files, for .xdmf both, are written
+/// before renaming).
 
 #include "meshprep/fem/tet_mesh.h"
 

@@ -10,18 +10,24 @@
 /// | .vtk | VTK legacy UNSTRUCTURED_GRID 2.0-5.1, ASCII and BINARY | tets (10), triangles (5) | cell data, see below | the same array on triangles |
 /// | .mesh | Medit ASCII, MeshVersionFormatted 1-4 | Tetrahedra, Triangles | reference | reference |
 /// | .node, .ele | TetGen .node + .ele (+ .face if present), 0- or 1-based | tets | first .ele attribute | .face marker |
+/// | .xdmf | XDMF 2/3, data in HDF5 (Format="HDF") or inline ("XML"); dolfinx's and meshprep's layout | the Uniform grid `mesh` (else the first with its own Geometry): Tetrahedron | grid `cell_tags` (tets matched by corners) or a region Attribute | grid `facet_tags` (Triangle + cell Attribute) |
 ///
-/// Names: Gmsh physical names of surfaces and volumes become TetMesh::boundary_names and
-/// region_names (of the tags the mesh has; names of points and lines are skipped), made to follow
-/// patch_names.h's rule (each change in TetReadReport::renamed_names).
+/// Names: Gmsh physical names of surfaces and volumes, and XDMF's `<Information Name="<name>"
+/// Value="<tag>"/>` in a tag grid (what write_tet_mesh writes; a default name such as `boundary_3`
+/// is dropped), become TetMesh::boundary_names and region_names (of the tags the mesh has; names
+/// of points and lines are skipped), made to follow patch_names.h's rule (each change in
+/// TetReadReport::renamed_names).
 ///
 /// VTK region arrays: the first cell-data array named `region`, `gmsh:physical`, `CellEntityIds`,
-/// `medit:ref` or `tetgen:ref` (one component).
+/// `medit:ref` or `tetgen:ref` (one component); the same names for a cell Attribute of an XDMF
+/// mesh grid.
 ///
 /// What is refused (InvalidInput): higher-order or non-tetrahedral volume elements (10-node tets,
 /// hexahedra, prisms, pyramids: meshprep works on linear tets), a file without tetrahedra (a
 /// surface: read it with read_soup from a surface format), partitioned Gmsh files, MSH 1 and 4.0,
-/// binary Medit (.meshb, not read), negative regions or tags, a non-finite coordinate, an index
+/// binary Medit (.meshb, not read), XDMF grid collections, mixed topologies and data not in HDF5
+/// or inline XML, an XDMF whose HDF5 file or dataset is missing or of another shape than its
+/// DataItem says, negative regions or tags, a non-finite coordinate, an index
 /// out of range, a tet with a repeated corner, two tets with the same corners, a face shared by
 /// more than two tets, a triangle that is not a face of any tet. Points, lines, quadrilaterals
 /// and other lower-dimensional elements are skipped (counted in TetReadReport::elements_ignored).
@@ -65,15 +71,16 @@ struct TetReadReport {
 };
 
 /// Read a tetrahedral mesh (format from the extension; for TetGen either the .node or the .ele,
-/// the siblings are found by name and .face is optional).
+/// the siblings are found by name and .face is optional; an .xdmf's HDF5 files are found where
+/// its DataItems say, relative to its folder).
 /// \param report if not null, receives what the file held beyond the mesh.
 /// \throws InvalidInput for an unknown extension (the message lists the supported ones) or a
 ///         malformed file: one line naming the file, the line or byte where it helps, and the
 ///         problem; IoError if a file cannot be opened or read.
 TetMesh read_tet_mesh(const std::string& path, TetReadReport* report = nullptr);
 
-/// Whether read_tet_mesh reads files with the extension of `path` (.msh .vtu .vtk .mesh .node .ele,
-/// case-insensitive).
+/// Whether read_tet_mesh reads files with the extension of `path` (.msh .vtu .vtk .mesh .node .ele
+/// .xdmf, case-insensitive).
 bool is_tet_mesh_path(const std::string& path);
 
 }  // namespace meshprep

@@ -118,7 +118,7 @@ struct PipelineConfig {
     /// at 10 %), an extruded block's are split (its walls are long thin triangles: kept, 11 % of
     /// the terrain's tets fall under 10 degrees).
     std::optional<bool> keep_surface;
-    std::string format = "msh";  ///< msh, vtu, mesh, inp or node: the file tets.<format>
+    std::string format = "msh";  ///< msh, vtu, mesh, inp, node or xdmf: the file tets.<format>
     TetExportOptions export_options;
   } tetrahedralize;
   struct Improve {
