@@ -11,7 +11,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 namespace meshprep::cli {
@@ -135,6 +137,15 @@ TetExportOptions tet_export_options(const std::string& output, const std::string
   options.msh_version = msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
   options.binary = binary;
   return options;
+}
+
+void note_export_rounding(const std::string& output, const TetExportReport& report) {
+  if (report.rounded_coordinates == 0) return;
+  std::ostringstream bound;  // two digits, without touching std::cerr's precision
+  bound << std::setprecision(2) << report.max_relative_rounding;
+  std::cerr << "meshprep: note: " << output << ": " << report.rounded_coordinates
+            << " coordinates rounded to fit the format's 20-character fields (relative error at most " << bound.str()
+            << ")\n";
 }
 
 ImproveParams ImproveFlags::applied_to(ImproveParams params) const {

@@ -83,6 +83,10 @@ void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags);
 TetExportOptions tet_export_options(const std::string& output, const std::string& target, const std::string& msh_version,
                                     bool binary);
 
+/// Notes on stderr, in one line, that writing `output` rounded coordinates to fit the format
+/// (TetExportReport; .inp's 20-character fields), with how many and by how much; nothing when none.
+void note_export_rounding(const std::string& output, const TetExportReport& report);
+
 /// The improvement's flags, each set only when given (the defaults stay ImproveParams').
 struct ImproveFlags {
   bool off = false;  ///< --no-improve

@@ -50,7 +50,9 @@ int convert_tet_mesh(const ConvertOptions& o) {
   TetExportOptions options;
   options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
   options.binary = o.binary;
-  write_naming_both(o, [&] { write_tet_mesh(mesh, o.output, options); });
+  TetExportReport written;
+  write_naming_both(o, [&] { write_tet_mesh(mesh, o.output, options, &written); });
+  note_export_rounding(o.output, written);
   report(o, {{"kind", "tets"}, {"points", mesh.points.size()}, {"tets", mesh.tets.size()},
              {"boundary_faces", mesh.boundary_faces.size()}},
          std::to_string(mesh.points.size()) + " points, " + std::to_string(mesh.tets.size()) + " tets, " +

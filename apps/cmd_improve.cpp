@@ -61,7 +61,9 @@ int run_improve(const ImproveOptions& o) {
   json["tet_quality"] = to_json(after);
   json["fem_ready"] = verdict.ok();
   json["thresholds"] = to_json(verdict);
-  write_tet_mesh(tets, o.output, options);
+  TetExportReport written;
+  write_tet_mesh(tets, o.output, options, &written);
+  note_export_rounding(o.output, written);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
     std::cout << o.input << " -> " << o.output << " (" << read.format << ")\n";

@@ -184,14 +184,19 @@ int run_pipeline_command(const PipelineOptions& o) {
   run["threads"] = parallelism.threads();
   run["versions"] = build_versions();
   std::vector<std::string> files;
+  TetExportReport tet_export;
   try {
-    files = write_pipeline_outputs(result, config, o.outdir, run, [] {
-      pause_while_writing_for_tests();
-      return stop_requested();
-    });
+    files = write_pipeline_outputs(
+        result, config, o.outdir, run,
+        [] {
+          pause_while_writing_for_tests();
+          return stop_requested();
+        },
+        &tet_export);
   } catch (const Cancelled&) {
     throw Cancelled(o.input + ": " + stop_reason() + " while writing " + o.outdir + "; nothing written");
   }
+  note_export_rounding((std::filesystem::path(o.outdir) / ("tets." + config.tetrahedralize.format)).string(), tet_export);
   const nlohmann::ordered_json summary = pipeline_summary(result, config);
   if (!o.json.empty()) emit_json(summary, o.json);
   if (!o.quiet) {

@@ -149,7 +149,9 @@ int run_tetrahedralize(const TetOptions& o) {
     progress("FEM check: P1 Poisson solve on " + std::to_string(tets.tets.size()) + " tets ...");
     json["fem_check"] = to_json(run_fem_check(tets));
   }
-  write_tet_mesh(tets, o.output, options);
+  TetExportReport written;
+  write_tet_mesh(tets, o.output, options, &written);
+  note_export_rounding(o.output, written);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
     std::cout << o.input << " -> " << o.output << ": " << quality.tetrahedra << " tets, " << quality.points

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -278,6 +279,53 @@ TEST_F(FemExportTest, CoordinatesRoundTripExactly) {
     ASSERT_EQ(f.size(), 4u);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(std::strtod(f[c + 1].c_str(), nullptr), mesh.points[v][c]) << lines[v + 2];
   }
+}
+
+// CalculiX reads 20 characters a field: a coordinate whose shortest round-trip form is longer is
+// rounded to fit, and the report bounds the rounding; one that fits is written exactly.
+TEST_F(FemExportTest, AbaqusFieldsFitTwentyCharactersWithinTheReportedRounding) {
+  TetMesh mesh = test::cube_tets(1);  // only the combinatorics matter to the writer
+  const double values[] = {-1.2345678901234567e-100, 1.2345678901234567e+300, -9.8765432109876543e-5,
+                           1.2345678901234567e-4,    -123456789012345678.0,    2.2250738585072014e-308,
+                           -1.7976931348623157e308,  4.9406564584124654e-324,  -0.30000000000000004,
+                           0.1 + 0.2,                -1.0 / 3.0,               1e22,
+                           -2.5e-7,                  0.0,                      -7.0,
+                           1.0 / 7.0 * 1e-20,        -1.0 / 7.0 * 1e20,        123456.78901234567,
+                           -9.9999999999999998e-101, 5.5511151231257827e-17,   -6.0221407599999999e23,
+                           1.602176634e-19,          -8.8541878128000006e-12,  3.0000000000000001e-200};
+  ASSERT_EQ(std::size(values), 3 * mesh.points.size());
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    for (int c = 0; c < 3; ++c) mesh.points[v][c] = values[3 * v + c];
+  TetExportReport report;
+  write_tet_mesh(mesh, path("big.inp"), {}, &report);
+  const std::vector<std::string> lines = lines_of(path("big.inp"));
+  const auto node = std::find(lines.begin(), lines.end(), "*NODE");
+  ASSERT_NE(node, lines.end());
+  std::size_t rounded = 0;
+  double worst = 0;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    const std::vector<std::string> f = fields_of(node[static_cast<std::ptrdiff_t>(v) + 1], ',');
+    ASSERT_EQ(f.size(), 4u);
+    for (int c = 0; c < 3; ++c) {
+      const std::string field = f[c + 1].substr(f[c + 1].find_first_not_of(' '));
+      EXPECT_LE(field.size(), 20u) << field;
+      const double exact = mesh.points[v][c], read = std::strtod(field.c_str(), nullptr);
+      if (read == exact) continue;
+      ++rounded;
+      const double relative = std::abs(read - exact) / std::abs(exact);
+      EXPECT_LE(relative, report.max_relative_rounding) << field << " for " << exact;
+      worst = std::max(worst, relative);
+    }
+  }
+  EXPECT_GT(rounded, 8u);  // most of the 17-digit values need more than 20 characters
+  EXPECT_EQ(report.rounded_coordinates, rounded);
+  EXPECT_EQ(report.max_relative_rounding, worst);
+  EXPECT_LE(report.max_relative_rounding, 5e-13);  // 13 significant digits at the least
+
+  TetExportReport exact;
+  write_tet_mesh(test::cube_tets(2), path("cube.inp"), {}, &exact);
+  EXPECT_EQ(exact.rounded_coordinates, 0u);
+  EXPECT_EQ(exact.max_relative_rounding, 0.0);
 }
 
 TEST_F(FemExportTest, UnknownExtensionListsTheSupportedOnes) {

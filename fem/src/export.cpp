@@ -18,10 +18,13 @@ namespace meshprep {
 namespace {
 
 using Writer = void (*)(const TetMesh&, const std::string&, const TetExportOptions&);
+// A writer that may have to round coordinates to fit the format (.inp), and reports it.
+using RoundingWriter = void (*)(const TetMesh&, const std::string&, TetExportReport&);
 
 struct Format {
   const char* extension;
-  Writer write;
+  Writer write = nullptr;
+  RoundingWriter write_rounding = nullptr;  // instead of write
 };
 
 const std::array<Format, 7> formats{{
@@ -30,7 +33,7 @@ const std::array<Format, 7> formats{{
     {".vtk", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtk_legacy(m, p); }},
     {".mesh", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_medit(m, p); }},
     {".node", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_tetgen(m, p); }},
-    {".inp", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_abaqus(m, p); }},
+    {".inp", nullptr, [](const TetMesh& m, const std::string& p, TetExportReport& r) { detail::write_abaqus(m, p, r); }},
     {".xdmf", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_xdmf(m, p); }},
 }};
 
@@ -123,10 +126,16 @@ std::vector<int> distinct_tags(const std::vector<int>& tags) {
 
 }  // namespace detail
 
-void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options) {
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options,
+                    TetExportReport* report) {
   const Format& format = format_for(path);
   validate(mesh, path);
-  format.write(mesh, path, options);
+  TetExportReport written;
+  if (format.write_rounding)
+    format.write_rounding(mesh, path, written);
+  else
+    format.write(mesh, path, options);
+  if (report) *report = written;
 }
 
 }  // namespace meshprep

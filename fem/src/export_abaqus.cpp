@@ -5,6 +5,12 @@
 //   surface *SURFACE, NAME=SURF_<t>, TYPE=ELEMENT with "element, S<k>" lines.
 // Data lines hold at most 16 entries (the Abaqus limit for set definitions).
 //
+// Numbers: CalculiX (2.20) reads each field of a data line into 20 characters and stops with
+// "*ERROR reading *NODE" on a longer one, while a double's shortest round-trip form takes up to 24
+// ("-1.2345678901234567e-100"). A coordinate is written in that form when it fits, else with the
+// most significant digits whose general form fits (13 at the least, a relative rounding under
+// 5e-13), and the rounding is reported (TetExportReport).
+//
 // Orientation: C3D4 nodes 1-2-3 are counter-clockwise seen from node 4, i.e. positive volume in
 // TetMesh's sense, so tets are written in their own order. Faces (Abaqus Analysis User's Guide,
 // "Three-dimensional solid element library"; CalculiX manual, C3D4): S1 = 1-2-3, S2 = 1-4-2,
@@ -16,6 +22,9 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <string>
@@ -25,6 +34,7 @@ namespace meshprep::detail {
 namespace {
 
 constexpr std::size_t max_entries_per_line = 16;
+constexpr std::size_t max_field_length = 20;
 
 // Local C3D4 faces, 0-based (S1..S4).
 constexpr std::array<std::array<int, 3>, 4> c3d4_faces{{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}}};
@@ -77,11 +87,33 @@ void write_id_list(std::ostream& out, const std::vector<std::size_t>& ids) {
   }
 }
 
-void write_nodes(std::ostream& out, const TetMesh& mesh) {
+// `value` in at most max_field_length characters: the shortest round-trip form if it fits, else
+// the general form with the most significant digits that fits; a rounding goes into `report`.
+void write_field(std::ostream& out, double value, TetExportReport& report) {
+  std::array<char, 32> buffer;  // the longest shortest-round-trip double is 24 characters
+  char* const first = buffer.data();
+  char* last = std::to_chars(first, first + buffer.size(), value).ptr;
+  if (static_cast<std::size_t>(last - first) > max_field_length) {
+    for (int precision = std::numeric_limits<double>::max_digits10 - 1; precision > 0; --precision) {
+      last = std::to_chars(first, first + buffer.size(), value, std::chars_format::general, precision).ptr;
+      if (static_cast<std::size_t>(last - first) <= max_field_length) break;
+    }
+    double written = 0;
+    std::from_chars(first, last, written);
+    ++report.rounded_coordinates;
+    report.max_relative_rounding = std::max(report.max_relative_rounding, std::abs(written - value) / std::abs(value));
+  }
+  out.write(first, last - first);
+}
+
+void write_nodes(std::ostream& out, const TetMesh& mesh, TetExportReport& report) {
   out << "*NODE\n";
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
-    out << v + 1 << ", ";
-    write_point(out, mesh.points[v], ", ");
+    out << v + 1;
+    for (int c = 0; c < 3; ++c) {
+      out << ", ";
+      write_field(out, mesh.points[v][c], report);
+    }
     out << '\n';
   }
 }
@@ -113,12 +145,13 @@ void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<
 
 }  // namespace
 
-void write_abaqus(const TetMesh& mesh, const std::string& path) {
+void write_abaqus(const TetMesh& mesh, const std::string& path, TetExportReport& report) {
   const std::vector<FaceOwner> owners = face_owners(mesh, path);
   write_file_atomically(path, [&](std::ostream& out) {
+    report = {};
     out << "*HEADING\n"
         << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << " C3D4 elements\n";
-    write_nodes(out, mesh);
+    write_nodes(out, mesh, report);
     write_elements(out, mesh);
     write_boundaries(out, mesh, owners);
   });

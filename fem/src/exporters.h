@@ -16,7 +16,7 @@ void write_vtu(const TetMesh& mesh, const std::string& path);
 void write_vtk_legacy(const TetMesh& mesh, const std::string& path);
 void write_medit(const TetMesh& mesh, const std::string& path);
 void write_tetgen(const TetMesh& mesh, const std::string& path);
-void write_abaqus(const TetMesh& mesh, const std::string& path);
+void write_abaqus(const TetMesh& mesh, const std::string& path, TetExportReport& report);
 void write_xdmf(const TetMesh& mesh, const std::string& path);
 
 /// Writes `value` in the shortest form that reads back to the same double (std::to_chars).

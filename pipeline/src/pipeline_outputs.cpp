@@ -151,7 +151,8 @@ std::vector<std::string> pipeline_output_names(const PipelineConfig& config, boo
 
 std::vector<std::string> write_pipeline_outputs(const PipelineResult& result, const PipelineConfig& config,
                                                 const std::string& outdir, const nlohmann::ordered_json& run,
-                                                const std::function<bool()>& cancelled) {
+                                                const std::function<bool()>& cancelled,
+                                                TetExportReport* tet_export) {
   CreatedFolder created(create_output_dir(outdir));
   remove_abandoned_staging(outdir);
   const StagingFolder staging(outdir);
@@ -179,7 +180,7 @@ std::vector<std::string> write_pipeline_outputs(const PipelineResult& result, co
   if (result.tets) {
     stop_if_asked();
     const PipelineConfig::Tetrahedralize& t = config.tetrahedralize;
-    write_tet_mesh(*result.tets, staging.file("tets." + t.format), t.export_options);
+    write_tet_mesh(*result.tets, staging.file("tets." + t.format), t.export_options, tet_export);
   }
   stop_if_asked();
 

@@ -14,7 +14,10 @@
 /// | .xdmf | XDMF 3 + HDF5 (sibling .h5), dolfinx's XDMFFile layout | grids `facet_tags`, `cell_tags`; names as `<Information>` |
 ///
 /// Node and element numbers are 1-based (0-based point ids in the VTK formats and XDMF); tet t is element
-/// t + 1 where a format numbers elements. Coordinates are written with round-trip precision.
+/// t + 1 where a format numbers elements. Coordinates are written with round-trip precision, but
+/// in .inp: CalculiX reads at most 20 characters a field, so a coordinate whose shortest
+/// round-trip form is longer (up to 24: "-1.2345678901234567e-100") is written with the most
+/// significant digits that fit (at least 13), and TetExportReport says by how much it moved.
 ///
 /// Every tet is written positively oriented in each format's own node order. Writes are atomic
 /// (a temporary file renamed into place; for .node all three files, for .xdmf both, are written
@@ -22,6 +25,7 @@
 
 #include "meshprep/fem/tet_mesh.h"
 
+#include <cstddef>
 #include <string>
 
 namespace meshprep {
@@ -33,13 +37,21 @@ struct TetExportOptions {
   bool binary = false;                       ///< .msh only
 };
 
+/// What write_tet_mesh had to give up to fit the format. Only .inp rounds (see above).
+struct TetExportReport {
+  std::size_t rounded_coordinates = 0;  ///< coordinates written with fewer digits than a round trip needs
+  double max_relative_rounding = 0;     ///< the largest |written - exact| / |exact| among them (0 when none)
+};
+
 /// Write `mesh` to `path` (format from the extension).
+/// \param report if not null, receives what the format made the writer round.
 /// \throws InvalidInput for an unknown extension (the message lists the supported ones), or a
 ///         malformed mesh (no tets, per-element arrays of the wrong size, an index out of range or
 ///         repeated within an element, a region or tag < 1, a name against patch_names.h's rule,
 ///         a non-finite coordinate; for .inp also
 ///         a boundary face that is not an outward face of any tet);
 ///         IoError if a file cannot be written (nothing is left behind).
-void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {});
+void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {},
+                    TetExportReport* report = nullptr);
 
 }  // namespace meshprep

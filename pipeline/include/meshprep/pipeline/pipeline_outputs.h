@@ -54,10 +54,12 @@ nlohmann::ordered_json pipeline_record(const PipelineConfig& config, const nlohm
 /// by a run that died while writing (SIGKILL, a power cut): it is removed before this run writes.
 /// `cancelled`, if given, is asked before each file; when it says yes, the staging folder is
 /// removed and Cancelled thrown (once the renames have begun, they are finished).
+/// `tet_export`, if not null, receives what writing the tets rounded (export.h; all zero without tets).
 /// \throws WriteError if a file or the folder cannot be written; Cancelled.
 std::vector<std::string> write_pipeline_outputs(const PipelineResult& result, const PipelineConfig& config,
                                                 const std::string& outdir, const nlohmann::ordered_json& run,
-                                                const std::function<bool()>& cancelled = {});
+                                                const std::function<bool()>& cancelled = {},
+                                                TetExportReport* tet_export = nullptr);
 
 /// The pipeline's HTML report (report.html) as a string.
 std::string pipeline_report_html(const PipelineResult& result, const PipelineConfig& config);
