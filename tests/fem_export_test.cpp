@@ -235,6 +235,17 @@ TEST_F(FemExportTest, AbaqusSetsAndElementFaceSurfaces) {
     const std::string surface = "*SURFACE, NAME=SURF_" + std::to_string(tag) + ", TYPE=ELEMENT";
     ASSERT_TRUE(blocks.count(surface)) << surface;
     ASSERT_EQ(blocks[surface].size(), 8u);
+    // The element set: the tets having a face on the side, each once.
+    const std::string elset = "*ELSET, ELSET=BOUNDARY_" + std::to_string(tag);
+    ASSERT_TRUE(blocks.count(elset)) << elset;
+    std::vector<int> in_elset;
+    std::set<int> in_surface;
+    for (const auto& f : blocks[elset])
+      for (const std::string& id : f) in_elset.push_back(std::stoi(id));
+    for (const auto& f : blocks[surface]) in_surface.insert(std::stoi(f.at(0)));
+    EXPECT_TRUE(std::is_sorted(in_elset.begin(), in_elset.end())) << elset;
+    EXPECT_EQ(std::set<int>(in_elset.begin(), in_elset.end()), in_surface) << elset;
+    EXPECT_EQ(in_elset.size(), in_surface.size()) << elset << ": each tet once";
     const int axis = (tag - 1) / 2;
     const double side = (tag - 1) % 2;
     for (const auto& f : blocks[surface]) {
@@ -246,6 +257,65 @@ TEST_F(FemExportTest, AbaqusSetsAndElementFaceSurfaces) {
         EXPECT_EQ(mesh.points.at(element[corner] - 1)[axis], side) << "SURF_" << tag << ": " << f[0] << ", " << f[1];
     }
   }
+}
+
+// Patch and region names name the sets; unnamed tags keep the names of earlier decks.
+TEST_F(FemExportTest, AbaqusSetsCarryThePatchAndRegionNames) {
+  TetMesh mesh = test::cube_tets(2);
+  mesh.boundary_names = {{1, "inlet"}, {6, "Top_Wall"}, {9, "absent"}};  // tag 9 has no face: no set
+  mesh.region_names = {{2, "steel"}};
+  write_tet_mesh(mesh, path("named.inp"));
+  std::vector<std::string> keywords;
+  for (const std::string& line : lines_of(path("named.inp")))
+    if (line.rfind('*', 0) == 0) keywords.push_back(line);
+  const std::vector<std::string> expected{
+      "*HEADING",
+      "*NODE",
+      "*ELEMENT, TYPE=C3D4, ELSET=REGION_1",
+      "*ELEMENT, TYPE=C3D4, ELSET=steel",
+      "*NSET, NSET=inlet",
+      "*ELSET, ELSET=inlet",
+      "*SURFACE, NAME=inlet, TYPE=ELEMENT",
+      "*NSET, NSET=BOUNDARY_2",
+      "*ELSET, ELSET=BOUNDARY_2",
+      "*SURFACE, NAME=SURF_2, TYPE=ELEMENT",
+      "*NSET, NSET=BOUNDARY_3",
+      "*ELSET, ELSET=BOUNDARY_3",
+      "*SURFACE, NAME=SURF_3, TYPE=ELEMENT",
+      "*NSET, NSET=BOUNDARY_4",
+      "*ELSET, ELSET=BOUNDARY_4",
+      "*SURFACE, NAME=SURF_4, TYPE=ELEMENT",
+      "*NSET, NSET=BOUNDARY_5",
+      "*ELSET, ELSET=BOUNDARY_5",
+      "*SURFACE, NAME=SURF_5, TYPE=ELEMENT",
+      "*NSET, NSET=Top_Wall",
+      "*ELSET, ELSET=Top_Wall",
+      "*SURFACE, NAME=Top_Wall, TYPE=ELEMENT",
+  };
+  EXPECT_EQ(keywords, expected);
+}
+
+// Abaqus and CalculiX ignore the case of names, and a set named twice would merge: refused, as
+// is a name a deck cannot hold; nothing is written.
+TEST_F(FemExportTest, AbaqusRefusesSetNamesThatClashOrBreakTheRule) {
+  const auto expect_refused = [&](const TagNames& boundary, const TagNames& regions, const char* words) {
+    TetMesh mesh = test::cube_tets(1);
+    mesh.boundary_names = boundary;
+    mesh.region_names = regions;
+    try {
+      write_tet_mesh(mesh, path("clash.inp"));
+      ADD_FAILURE() << words << ": no exception";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  expect_refused({{1, "Steel"}}, {{1, "STEEL"}}, "ELSET Steel would name both region 1 and boundary tag 1");
+  expect_refused({{1, "BOUNDARY_2"}}, {}, "ELSET BOUNDARY_2 would name both boundary tag 1 and boundary tag 2");
+  expect_refused({{1, "SURF_2"}}, {}, "SURFACE SURF_2 would name both boundary tag 1 and boundary tag 2");
+  expect_refused({{1, "region_1"}}, {}, "ELSET region_1 would name both region 1 and boundary tag 1");
+  expect_refused({{3, "two words"}}, {}, "boundary tag 3 is named 'two words'");
+  expect_refused({}, {{1, "a,b"}}, "region 1 is named 'a,b'");
+  EXPECT_TRUE(directory_entries().empty());
 }
 
 TEST_F(FemExportTest, TetgenFilesAndCounts) {

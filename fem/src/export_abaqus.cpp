@@ -1,8 +1,14 @@
 // Abaqus / CalculiX input deck .inp with linear tetrahedra (C3D4), 1-based node and element ids
 // (tet t is element t + 1):
-//   *NODE; one *ELEMENT, TYPE=C3D4, ELSET=REGION_<r> block per region;
-//   per boundary tag: *NSET, NSET=BOUNDARY_<t> (the nodes of its faces) and an element-face
-//   surface *SURFACE, NAME=SURF_<t>, TYPE=ELEMENT with "element, S<k>" lines.
+//   *NODE; one *ELEMENT, TYPE=C3D4, ELSET=<region> block per region;
+//   per boundary tag: *NSET, NSET=<patch> (the nodes of its faces), *ELSET, ELSET=<patch> (the
+//   tets having a face on it) and an element-face surface *SURFACE, NAME=<patch>, TYPE=ELEMENT
+//   with "element, S<k>" lines.
+// A region's set is named by TetMesh::region_names, else REGION_<r>; a patch's three sets by
+// TetMesh::boundary_names, else BOUNDARY_<t> (node and element set) and SURF_<t> (surface), the
+// names decks written before patches had names refer to. Abaqus and CalculiX ignore the case of
+// names; two sets of one kind with the same name would merge, so that is refused, as is a name
+// that breaks patch_names.h's rule (a comma or a space would end the keyword's parameter).
 // Data lines hold at most 16 entries (the Abaqus limit for set definitions).
 //
 // Numbers: CalculiX (2.20) reads each field of a data line into 20 characters and stops with
@@ -19,15 +25,18 @@
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/core/patch_names.h"
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace meshprep::detail {
@@ -118,9 +127,71 @@ void write_nodes(std::ostream& out, const TetMesh& mesh, TetExportReport& report
   }
 }
 
-void write_elements(std::ostream& out, const TetMesh& mesh) {
+// The names of the sets: a region's element set; a patch's node and element sets, its surface.
+struct SetNames {
+  std::map<int, std::string> region;
+  std::map<int, std::string> patch_sets, patch_surface;
+};
+
+std::string upper_case(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return name;
+}
+
+void check_names(const std::string& path, const TagNames& names, const char* what) {
+  for (const auto& [tag, name] : names)
+    if (!is_valid_name(name))
+      throw InvalidInput(path + ": cannot export: " + what + " " + std::to_string(tag) + " is named '" + name + "': " +
+                         kNameRule);
+}
+
+// Refuses a name given to two sets of one kind (`sets`: what owns each set, and its name).
+void check_distinct(const std::string& path, const char* keyword,
+                    const std::vector<std::pair<std::string, std::string>>& sets) {
+  std::map<std::string, const std::string*> owners;  // upper-case name -> owner
+  for (const auto& [owner, name] : sets) {
+    const auto [it, inserted] = owners.emplace(upper_case(name), &owner);
+    if (!inserted)
+      throw InvalidInput(path + ": cannot export: " + keyword + " " + name + " would name both " + *it->second + " and " +
+                         owner + " (Abaqus and CalculiX names ignore case); rename one");
+  }
+}
+
+SetNames set_names(const TetMesh& mesh, const std::string& path) {
+  check_names(path, mesh.region_names, "region");
+  check_names(path, mesh.boundary_names, "boundary tag");
+  SetNames names;
+  std::vector<std::pair<std::string, std::string>> elsets, nsets, surfaces;
+  for (int region : distinct_tags(mesh.tet_regions)) {
+    names.region[region] = tag_name(mesh.region_names, region, "REGION");
+    elsets.emplace_back("region " + std::to_string(region), names.region[region]);
+  }
+  for (int tag : distinct_tags(mesh.boundary_tags)) {
+    const bool named = mesh.boundary_names.count(tag) > 0;
+    names.patch_sets[tag] = tag_name(mesh.boundary_names, tag, "BOUNDARY");
+    names.patch_surface[tag] = named ? names.patch_sets[tag] : "SURF_" + std::to_string(tag);
+    const std::string owner = "boundary tag " + std::to_string(tag);
+    elsets.emplace_back(owner, names.patch_sets[tag]);
+    nsets.emplace_back(owner, names.patch_sets[tag]);
+    surfaces.emplace_back(owner, names.patch_surface[tag]);
+  }
+  check_distinct(path, "ELSET", elsets);
+  check_distinct(path, "NSET", nsets);
+  check_distinct(path, "SURFACE", surfaces);
+  return names;
+}
+
+// Sorted, each once, 1-based.
+std::vector<std::size_t> distinct_ids(std::vector<std::size_t> ids) {
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  for (std::size_t& id : ids) ++id;
+  return ids;
+}
+
+void write_elements(std::ostream& out, const TetMesh& mesh, const SetNames& names) {
   for (const auto& [region, tets] : group_by_tag(mesh.tet_regions)) {
-    out << "*ELEMENT, TYPE=C3D4, ELSET=REGION_" << region << '\n';
+    out << "*ELEMENT, TYPE=C3D4, ELSET=" << names.region.at(region) << '\n';
     for (std::size_t t : tets) {
       out << t + 1;
       for (std::uint32_t v : mesh.tets[t]) out << ", " << v + std::size_t{1};
@@ -129,16 +200,19 @@ void write_elements(std::ostream& out, const TetMesh& mesh) {
   }
 }
 
-void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<FaceOwner>& owners) {
+void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<FaceOwner>& owners,
+                      const SetNames& names) {
   for (const auto& [tag, faces] : group_by_tag(mesh.boundary_tags)) {
-    std::vector<std::size_t> nodes;
-    for (std::size_t f : faces)
-      for (std::uint32_t v : mesh.boundary_faces[f]) nodes.push_back(v + std::size_t{1});
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    out << "*NSET, NSET=BOUNDARY_" << tag << '\n';
-    write_id_list(out, nodes);
-    out << "*SURFACE, NAME=SURF_" << tag << ", TYPE=ELEMENT\n";
+    std::vector<std::size_t> nodes, tets;
+    for (std::size_t f : faces) {
+      for (std::uint32_t v : mesh.boundary_faces[f]) nodes.push_back(v);
+      tets.push_back(owners[f].tet);
+    }
+    out << "*NSET, NSET=" << names.patch_sets.at(tag) << '\n';
+    write_id_list(out, distinct_ids(std::move(nodes)));
+    out << "*ELSET, ELSET=" << names.patch_sets.at(tag) << '\n';
+    write_id_list(out, distinct_ids(std::move(tets)));
+    out << "*SURFACE, NAME=" << names.patch_surface.at(tag) << ", TYPE=ELEMENT\n";
     for (std::size_t f : faces) out << owners[f].tet + 1 << ", S" << owners[f].face << '\n';
   }
 }
@@ -147,13 +221,14 @@ void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<
 
 void write_abaqus(const TetMesh& mesh, const std::string& path, TetExportReport& report) {
   const std::vector<FaceOwner> owners = face_owners(mesh, path);
+  const SetNames names = set_names(mesh, path);
   write_file_atomically(path, [&](std::ostream& out) {
     report = {};
     out << "*HEADING\n"
         << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << " C3D4 elements\n";
     write_nodes(out, mesh, report);
-    write_elements(out, mesh);
-    write_boundaries(out, mesh, owners);
+    write_elements(out, mesh, names);
+    write_boundaries(out, mesh, owners, names);
   });
 }
 

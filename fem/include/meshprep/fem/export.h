@@ -10,7 +10,7 @@
 /// | .vtk | VTK legacy unstructured grid (ASCII 3.0), tets only | cell data `region` |
 /// | .mesh | Medit (INRIA), MeshVersionFormatted 2 | references on tetrahedra (region) and triangles (tag) |
 /// | .node | TetGen .node/.ele/.face (siblings derived from the name) | attribute on .ele, marker on .face |
-/// | .inp | Abaqus/CalculiX, C3D4 | ELSET `REGION_<r>`; NSET `BOUNDARY_<t>`, element-face *SURFACE `SURF_<t>` |
+/// | .inp | Abaqus/CalculiX, C3D4 | ELSET per region; per boundary tag an NSET (its nodes), an ELSET (the tets with a face on it) and an element-face *SURFACE; see below |
 /// | .xdmf | XDMF 3 + HDF5 (sibling .h5), dolfinx's XDMFFile layout | grids `facet_tags`, `cell_tags`; names as `<Information>` |
 ///
 /// Node and element numbers are 1-based (0-based point ids in the VTK formats and XDMF); tet t is element
@@ -18,6 +18,10 @@
 /// in .inp: CalculiX reads at most 20 characters a field, so a coordinate whose shortest
 /// round-trip form is longer (up to 24: "-1.2345678901234567e-100") is written with the most
 /// significant digits that fit (at least 13), and TetExportReport says by how much it moved.
+///
+/// Names in .inp: a region's ELSET is its name in TetMesh::region_names, else `REGION_<r>`; a
+/// boundary tag's NSET, ELSET and *SURFACE all take its name in TetMesh::boundary_names, else
+/// `BOUNDARY_<t>` (NSET, ELSET) and `SURF_<t>` (*SURFACE), as decks written before names had them.
 ///
 /// Every tet is written positively oriented in each format's own node order. Writes are atomic
 /// (a temporary file renamed into place; for .node all three files, for .xdmf both, are written
@@ -48,8 +52,8 @@ struct TetExportReport {
 /// \throws InvalidInput for an unknown extension (the message lists the supported ones), or a
 ///         malformed mesh (no tets, per-element arrays of the wrong size, an index out of range or
 ///         repeated within an element, a region or tag < 1, a name against patch_names.h's rule,
-///         a non-finite coordinate; for .inp also
-///         a boundary face that is not an outward face of any tet);
+///         a non-finite coordinate; for .inp also a boundary face that is not an outward face of
+///         any tet, or two sets of one kind with one name, case aside);
 ///         IoError if a file cannot be written (nothing is left behind).
 void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {},
                     TetExportReport* report = nullptr);
