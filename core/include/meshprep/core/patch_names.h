@@ -3,8 +3,13 @@
 /// One rule for the names of boundary patches and regions, so that every format we write holds a
 /// name unchanged and a solver deck, a dolfinx script and a Gmsh view all use the same word:
 /// ASCII letters, digits and '_', starting with a letter, at most kMaxNameLength characters (the
-/// Abaqus and CalculiX limit), and distinct without regard to case (both upper-case names). Names
-/// are made to follow it where they enter (a reader, a rename), and each change is reported.
+/// CalculiX limit), and distinct without regard to case (both upper-case names). Names are made to
+/// follow it where they enter (a reader, a rename), and each change is reported.
+///
+/// The limit is 79, not Abaqus' 80: CalculiX 2.20 stores a set's name with one character of its
+/// own appended, in 81 bytes; an 80-character set name prints as an empty one in the .dat, and a
+/// static job whose node set, element set and surface have 80-character names dies with a
+/// segmentation fault (tests/fem_export_test.cpp, CalculixSolvesOnNamedPatches, runs 79).
 
 #include "meshprep/core/mesh.h"
 
@@ -15,10 +20,10 @@
 
 namespace meshprep {
 
-inline constexpr std::size_t kMaxNameLength = 80;
+inline constexpr std::size_t kMaxNameLength = 79;
 /// The rule, for messages.
 inline constexpr const char* kNameRule =
-    "a patch name is ASCII letters, digits and '_', starts with a letter and has at most 80 characters";
+    "a patch name is ASCII letters, digits and '_', starts with a letter and has at most 79 characters";
 
 /// Whether `name` follows the rule (distinctness aside).
 bool is_valid_name(std::string_view name);
