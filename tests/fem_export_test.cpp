@@ -2,6 +2,7 @@
 // checks of our own output, and the error contract (InvalidInput / IoError, no partial files).
 #include "meshprep/core/errors.h"
 #include "hdf5_file.h"  // fem/src: the HDF5 handle that closes itself
+#include "meshprep/core/patch_names.h"
 #include "meshprep/fem/export.h"
 #include "tet_test_meshes.h"
 #include "scratch_dir.h"
@@ -259,7 +260,8 @@ TEST_F(FemExportTest, AbaqusSetsAndElementFaceSurfaces) {
   }
 }
 
-// Patch and region names name the sets; unnamed tags keep the names of earlier decks.
+// Patch and region names name the sets (a patch's element set <name>_TETS: CalculiX crashes on a
+// surface that shares its name with an element set); unnamed tags keep the names of earlier decks.
 TEST_F(FemExportTest, AbaqusSetsCarryThePatchAndRegionNames) {
   TetMesh mesh = test::cube_tets(2);
   mesh.boundary_names = {{1, "inlet"}, {6, "Top_Wall"}, {9, "absent"}};  // tag 9 has no face: no set
@@ -274,7 +276,7 @@ TEST_F(FemExportTest, AbaqusSetsCarryThePatchAndRegionNames) {
       "*ELEMENT, TYPE=C3D4, ELSET=REGION_1",
       "*ELEMENT, TYPE=C3D4, ELSET=steel",
       "*NSET, NSET=inlet",
-      "*ELSET, ELSET=inlet",
+      "*ELSET, ELSET=inlet_TETS",
       "*SURFACE, NAME=inlet, TYPE=ELEMENT",
       "*NSET, NSET=BOUNDARY_2",
       "*ELSET, ELSET=BOUNDARY_2",
@@ -289,7 +291,7 @@ TEST_F(FemExportTest, AbaqusSetsCarryThePatchAndRegionNames) {
       "*ELSET, ELSET=BOUNDARY_5",
       "*SURFACE, NAME=SURF_5, TYPE=ELEMENT",
       "*NSET, NSET=Top_Wall",
-      "*ELSET, ELSET=Top_Wall",
+      "*ELSET, ELSET=Top_Wall_TETS",
       "*SURFACE, NAME=Top_Wall, TYPE=ELEMENT",
   };
   EXPECT_EQ(keywords, expected);
@@ -309,13 +311,33 @@ TEST_F(FemExportTest, AbaqusRefusesSetNamesThatClashOrBreakTheRule) {
       EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
     }
   };
-  expect_refused({{1, "Steel"}}, {{1, "STEEL"}}, "ELSET Steel would name both region 1 and boundary tag 1");
-  expect_refused({{1, "BOUNDARY_2"}}, {}, "ELSET BOUNDARY_2 would name both boundary tag 1 and boundary tag 2");
-  expect_refused({{1, "SURF_2"}}, {}, "SURFACE SURF_2 would name both boundary tag 1 and boundary tag 2");
-  expect_refused({{1, "region_1"}}, {}, "ELSET region_1 would name both region 1 and boundary tag 1");
+  expect_refused({{1, "Steel"}}, {{1, "STEEL"}}, "Steel would name both the ELSET of region 1 and the SURFACE of boundary tag 1");
+  expect_refused({{1, "BOUNDARY_2"}}, {},
+                 "BOUNDARY_2 would name both the SURFACE of boundary tag 1 and the ELSET of boundary tag 2");
+  expect_refused({{1, "SURF_2"}}, {}, "SURF_2 would name both the SURFACE of boundary tag 1 and the SURFACE of boundary tag 2");
+  expect_refused({{1, "region_1"}}, {}, "region_1 would name both the ELSET of region 1 and the SURFACE of boundary tag 1");
+  expect_refused({{1, "top"}, {2, "TOP_tets"}}, {},
+                 "TOP_tets would name both the ELSET of boundary tag 1 and the SURFACE of boundary tag 2");
+  expect_refused({{2, "BOUNDARY_1"}}, {},
+                 "BOUNDARY_1 would name both the ELSET of boundary tag 1 and the SURFACE of boundary tag 2");
   expect_refused({{3, "two words"}}, {}, "boundary tag 3 is named 'two words'");
   expect_refused({}, {{1, "a,b"}}, "region 1 is named 'a,b'");
   EXPECT_TRUE(directory_entries().empty());
+}
+
+// CalculiX takes the named sets as written: a static job fixes one named patch, presses on another
+// whose name has the longest length the rule allows, and prints that patch's element set's
+// stresses (its name cut to fit "_TETS").
+TEST_F(FemExportTest, CalculixSolvesOnNamedPatches) {
+  if (!test::has_ccx()) GTEST_SKIP() << "ccx is not on PATH (apt-get install calculix-ccx)";
+  TetMesh mesh = test::cube_tets(2);
+  const std::string long_name = "Loaded_" + std::string(kMaxNameLength - 7, 'x');
+  mesh.boundary_names = {{1, "fixed_end"}, {2, long_name}};
+  mesh.region_names = {{2, "Steel"}};
+  write_tet_mesh(mesh, path("named.inp"));
+  EXPECT_TRUE(succeeds("python3 " + std::string(MESHPREP_CALCULIX_SCRIPT) + " " + path("named.inp") +
+                       " --fix fixed_end --pressure " + long_name + " --print-elset " +
+                       long_name.substr(0, kMaxNameLength - 5) + "_TETS"));
 }
 
 TEST_F(FemExportTest, TetgenFilesAndCounts) {

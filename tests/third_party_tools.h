@@ -1,5 +1,6 @@
 #pragma once
-// The third-party programs some tests use to write or read tet meshes (gmsh, Python's meshio), and
+// The third-party programs some tests use to write, read or solve on tet meshes (gmsh, Python's
+// meshio, CalculiX), and
 // whether they are here: a test that needs a missing one skips with a message.
 
 #include <sys/wait.h>
@@ -29,5 +30,8 @@ inline std::string python_with_meshio() { return python_with("meshio, numpy"); }
 
 /// Whether gmsh is on PATH.
 inline bool has_gmsh() { return succeeds("command -v gmsh >/dev/null 2>&1"); }
+
+/// Whether CalculiX's ccx is on PATH.
+inline bool has_ccx() { return succeeds("command -v ccx >/dev/null 2>&1"); }
 
 }  // namespace meshprep::test

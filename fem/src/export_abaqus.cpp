@@ -1,14 +1,19 @@
 // Abaqus / CalculiX input deck .inp with linear tetrahedra (C3D4), 1-based node and element ids
 // (tet t is element t + 1):
 //   *NODE; one *ELEMENT, TYPE=C3D4, ELSET=<region> block per region;
-//   per boundary tag: *NSET, NSET=<patch> (the nodes of its faces), *ELSET, ELSET=<patch> (the
-//   tets having a face on it) and an element-face surface *SURFACE, NAME=<patch>, TYPE=ELEMENT
-//   with "element, S<k>" lines.
-// A region's set is named by TetMesh::region_names, else REGION_<r>; a patch's three sets by
-// TetMesh::boundary_names, else BOUNDARY_<t> (node and element set) and SURF_<t> (surface), the
-// names decks written before patches had names refer to. Abaqus and CalculiX ignore the case of
-// names; two sets of one kind with the same name would merge, so that is refused, as is a name
-// that breaks patch_names.h's rule (a comma or a space would end the keyword's parameter).
+//   per boundary tag: *NSET (the nodes of its faces), *ELSET (the tets having a face on it) and an
+//   element-face surface *SURFACE, TYPE=ELEMENT with "element, S<k>" lines.
+// Names: a region's element set is named by TetMesh::region_names, else REGION_<r>. A patch
+// named in TetMesh::boundary_names gives its name to its node set and its surface, which *BOUNDARY
+// and *DSLOAD take, and <name>_TETS to its element set (the name cut so that this fits
+// kMaxNameLength); an unnamed tag keeps the names decks written before patches had names refer to:
+// BOUNDARY_<t> (node and element set) and SURF_<t> (surface).
+// Why not one name for all three: CalculiX 2.20 dies with a segmentation fault on a *DSLOAD on an
+// element-face surface that shares its name with an element set (a node set may share it).
+// Element sets and surfaces therefore form one namespace, node sets another; Abaqus and CalculiX
+// ignore the case of names, and a name given twice in one namespace is refused (naming both
+// owners), as is a name that breaks patch_names.h's rule (a comma or a space would end the
+// keyword's parameter).
 // Data lines hold at most 16 entries (the Abaqus limit for set definitions).
 //
 // Numbers: CalculiX (2.20) reads each field of a data line into 20 characters and stops with
@@ -127,11 +132,13 @@ void write_nodes(std::ostream& out, const TetMesh& mesh, TetExportReport& report
   }
 }
 
-// The names of the sets: a region's element set; a patch's node and element sets, its surface.
+// The names of the sets: a region's element set; a patch's node set, element set and surface.
 struct SetNames {
   std::map<int, std::string> region;
-  std::map<int, std::string> patch_sets, patch_surface;
+  std::map<int, std::string> patch_nset, patch_elset, patch_surface;
 };
+
+constexpr char kPatchElsetSuffix[] = "_TETS";
 
 std::string upper_case(std::string name) {
   std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -145,15 +152,15 @@ void check_names(const std::string& path, const TagNames& names, const char* wha
                          kNameRule);
 }
 
-// Refuses a name given to two sets of one kind (`sets`: what owns each set, and its name).
-void check_distinct(const std::string& path, const char* keyword,
-                    const std::vector<std::pair<std::string, std::string>>& sets) {
+// Refuses a name given twice in one namespace (`sets`: each set's owner, and its name).
+void check_distinct(const std::string& path, const std::vector<std::pair<std::string, std::string>>& sets) {
   std::map<std::string, const std::string*> owners;  // upper-case name -> owner
   for (const auto& [owner, name] : sets) {
     const auto [it, inserted] = owners.emplace(upper_case(name), &owner);
     if (!inserted)
-      throw InvalidInput(path + ": cannot export: " + keyword + " " + name + " would name both " + *it->second + " and " +
-                         owner + " (Abaqus and CalculiX names ignore case); rename one");
+      throw InvalidInput(path + ": cannot export: " + name + " would name both " + *it->second + " and " + owner +
+                         " (names ignore case, and CalculiX cannot tell an element set from a surface of the same "
+                         "name); rename one");
   }
 }
 
@@ -161,23 +168,28 @@ SetNames set_names(const TetMesh& mesh, const std::string& path) {
   check_names(path, mesh.region_names, "region");
   check_names(path, mesh.boundary_names, "boundary tag");
   SetNames names;
-  std::vector<std::pair<std::string, std::string>> elsets, nsets, surfaces;
+  std::vector<std::pair<std::string, std::string>> elsets_and_surfaces, nsets;
   for (int region : distinct_tags(mesh.tet_regions)) {
     names.region[region] = tag_name(mesh.region_names, region, "REGION");
-    elsets.emplace_back("region " + std::to_string(region), names.region[region]);
+    elsets_and_surfaces.emplace_back("the ELSET of region " + std::to_string(region), names.region[region]);
   }
   for (int tag : distinct_tags(mesh.boundary_tags)) {
-    const bool named = mesh.boundary_names.count(tag) > 0;
-    names.patch_sets[tag] = tag_name(mesh.boundary_names, tag, "BOUNDARY");
-    names.patch_surface[tag] = named ? names.patch_sets[tag] : "SURF_" + std::to_string(tag);
-    const std::string owner = "boundary tag " + std::to_string(tag);
-    elsets.emplace_back(owner, names.patch_sets[tag]);
-    nsets.emplace_back(owner, names.patch_sets[tag]);
-    surfaces.emplace_back(owner, names.patch_surface[tag]);
+    const auto named = mesh.boundary_names.find(tag);
+    const std::string number = std::to_string(tag);
+    if (named != mesh.boundary_names.end()) {
+      const std::string& name = named->second;
+      names.patch_nset[tag] = names.patch_surface[tag] = name;
+      names.patch_elset[tag] = name.substr(0, kMaxNameLength - (sizeof kPatchElsetSuffix - 1)) + kPatchElsetSuffix;
+    } else {
+      names.patch_nset[tag] = names.patch_elset[tag] = "BOUNDARY_" + number;
+      names.patch_surface[tag] = "SURF_" + number;
+    }
+    nsets.emplace_back("the NSET of boundary tag " + number, names.patch_nset[tag]);
+    elsets_and_surfaces.emplace_back("the ELSET of boundary tag " + number, names.patch_elset[tag]);
+    elsets_and_surfaces.emplace_back("the SURFACE of boundary tag " + number, names.patch_surface[tag]);
   }
-  check_distinct(path, "ELSET", elsets);
-  check_distinct(path, "NSET", nsets);
-  check_distinct(path, "SURFACE", surfaces);
+  check_distinct(path, elsets_and_surfaces);
+  check_distinct(path, nsets);
   return names;
 }
 
@@ -208,9 +220,9 @@ void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<
       for (std::uint32_t v : mesh.boundary_faces[f]) nodes.push_back(v);
       tets.push_back(owners[f].tet);
     }
-    out << "*NSET, NSET=" << names.patch_sets.at(tag) << '\n';
+    out << "*NSET, NSET=" << names.patch_nset.at(tag) << '\n';
     write_id_list(out, distinct_ids(std::move(nodes)));
-    out << "*ELSET, ELSET=" << names.patch_sets.at(tag) << '\n';
+    out << "*ELSET, ELSET=" << names.patch_elset.at(tag) << '\n';
     write_id_list(out, distinct_ids(std::move(tets)));
     out << "*SURFACE, NAME=" << names.patch_surface.at(tag) << ", TYPE=ELEMENT\n";
     for (std::size_t f : faces) out << owners[f].tet + 1 << ", S" << owners[f].face << '\n';

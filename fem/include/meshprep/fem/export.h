@@ -20,8 +20,10 @@
 /// significant digits that fit (at least 13), and TetExportReport says by how much it moved.
 ///
 /// Names in .inp: a region's ELSET is its name in TetMesh::region_names, else `REGION_<r>`; a
-/// boundary tag's NSET, ELSET and *SURFACE all take its name in TetMesh::boundary_names, else
-/// `BOUNDARY_<t>` (NSET, ELSET) and `SURF_<t>` (*SURFACE), as decks written before names had them.
+/// boundary tag named in TetMesh::boundary_names gives its name to its NSET and *SURFACE and
+/// `<name>_TETS` to its ELSET (CalculiX 2.20 crashes on a *DSLOAD on a surface that shares its name
+/// with an element set); an unnamed tag keeps `BOUNDARY_<t>` (NSET, ELSET) and `SURF_<t>`
+/// (*SURFACE), as decks written before names had them.
 ///
 /// Every tet is written positively oriented in each format's own node order. Writes are atomic
 /// (a temporary file renamed into place; for .node all three files, for .xdmf both, are written
@@ -53,7 +55,8 @@ struct TetExportReport {
 ///         malformed mesh (no tets, per-element arrays of the wrong size, an index out of range or
 ///         repeated within an element, a region or tag < 1, a name against patch_names.h's rule,
 ///         a non-finite coordinate; for .inp also a boundary face that is not an outward face of
-///         any tet, or two sets of one kind with one name, case aside);
+///         any tet, or one name, case aside, for two node sets or for two of the element sets and
+///         surfaces);
 ///         IoError if a file cannot be written (nothing is left behind).
 void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options = {},
                     TetExportReport* report = nullptr);
