@@ -18,6 +18,8 @@ packages=(
   # tests/python/test_xdmf_dolfinx.py (pytest): dolfinx reads our .xdmf and solves on it, h5py
   # reads its HDF5 data
   python3-pytest python3-dolfinx python3-h5py
+  # CalculiX, the solver that runs a static job on our Abaqus decks (tests/calculix.py)
+  calculix-ccx
   # the browser that renders the HTML reports in the tests
   chromium
   # clang and its libFuzzer runtime, for scripts/fuzz.sh
