@@ -320,8 +320,8 @@ TEST_F(FemExportTest, AbaqusRefusesSetNamesThatClashOrBreakTheRule) {
                  "TOP_tets would name both the ELSET of boundary tag 1 and the SURFACE of boundary tag 2");
   expect_refused({{2, "BOUNDARY_1"}}, {},
                  "BOUNDARY_1 would name both the ELSET of boundary tag 1 and the SURFACE of boundary tag 2");
-  expect_refused({{3, "two words"}}, {}, "boundary tag 3 is named 'two words'");
-  expect_refused({}, {{1, "a,b"}}, "region 1 is named 'a,b'");
+  expect_refused({{3, "two words"}}, {}, "cannot export the name 'two words'");
+  expect_refused({}, {{1, "a,b"}}, "cannot export the name 'a,b'");
   EXPECT_TRUE(directory_entries().empty());
 }
 

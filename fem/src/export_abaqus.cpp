@@ -12,8 +12,8 @@
 // element-face surface that shares its name with an element set (a node set may share it).
 // Element sets and surfaces therefore form one namespace, node sets another; Abaqus and CalculiX
 // ignore the case of names, and a name given twice in one namespace is refused (naming both
-// owners), as is a name that breaks patch_names.h's rule (a comma or a space would end the
-// keyword's parameter).
+// owners). (write_tet_mesh has refused a name against patch_names.h's rule, which a comma or a
+// space would break out of the keyword's parameter.)
 // Data lines hold at most 16 entries (the Abaqus limit for set definitions).
 //
 // Numbers: CalculiX (2.20) reads each field of a data line into 20 characters and stops with
@@ -145,13 +145,6 @@ std::string upper_case(std::string name) {
   return name;
 }
 
-void check_names(const std::string& path, const TagNames& names, const char* what) {
-  for (const auto& [tag, name] : names)
-    if (!is_valid_name(name))
-      throw InvalidInput(path + ": cannot export: " + what + " " + std::to_string(tag) + " is named '" + name + "': " +
-                         kNameRule);
-}
-
 // Refuses a name given twice in one namespace (`sets`: each set's owner, and its name).
 void check_distinct(const std::string& path, const std::vector<std::pair<std::string, std::string>>& sets) {
   std::map<std::string, const std::string*> owners;  // upper-case name -> owner
@@ -165,8 +158,6 @@ void check_distinct(const std::string& path, const std::vector<std::pair<std::st
 }
 
 SetNames set_names(const TetMesh& mesh, const std::string& path) {
-  check_names(path, mesh.region_names, "region");
-  check_names(path, mesh.boundary_names, "boundary tag");
   SetNames names;
   std::vector<std::pair<std::string, std::string>> elsets_and_surfaces, nsets;
   for (int region : distinct_tags(mesh.tet_regions)) {
