@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libopenmesh-dev libtet1.5-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libnanoflann-dev libpng-dev
-  zlib1g-dev  # the .vtu reader inflates vtkZLibDataCompressor data
+  zlib1g-dev  # .vtu data compressed by vtkZLibDataCompressor: the writer deflates it, the reader inflates it
   libhdf5-dev  # the heavy data of .xdmf files (the serial build; CMake's FindHDF5 finds it)
   libgmp-dev  # the exact stage of quality/'s orientation predicates
   python3

@@ -38,6 +38,8 @@ constexpr std::size_t kFaces = 48;
 using test::python_with_meshio;
 using test::succeeds;
 
+const TetExportOptions kAsciiVtu{MshVersion::V41, /*binary=*/false, /*ascii=*/true};
+
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream content;
@@ -70,12 +72,14 @@ class FemExportTest : public test::ScratchDirTest {
     return names;
   }
 
-  // Every format and variant, one file each (the .node also writes .ele and .face, the .xdmf .h5).
+  // Every format and variant, one file each (the .node also writes .ele and .face, the .xdmf .h5,
+  // the .vtu its _boundary.vtu).
   void write_all_formats(const TetMesh& mesh) const {
     write_tet_mesh(mesh, path("cube_v41_ascii.msh"));
     write_tet_mesh(mesh, path("cube_v41_binary.msh"), {MshVersion::V41, true});
     write_tet_mesh(mesh, path("cube_v22_ascii.msh"), {MshVersion::V22, false});
     write_tet_mesh(mesh, path("cube_v22_binary.msh"), {MshVersion::V22, true});
+    write_tet_mesh(mesh, path("cube_ascii.vtu"), kAsciiVtu);
     for (const char* extension : {".vtu", ".vtk", ".mesh", ".node", ".inp", ".xdmf"})
       write_tet_mesh(mesh, path(std::string("cube") + extension));
   }
@@ -116,7 +120,7 @@ TEST_F(FemExportTest, VtkFilesCarryEachTetsQualityInAFormVtkParses) {
   mesh.tets.push_back({0, 1, 3, 2});  // four corners of the face z = 0
   mesh.tet_regions.push_back(1);
   for (const char* name : {"cube.vtu", "cube.vtk"}) {
-    write_tet_mesh(mesh, path(name));
+    write_tet_mesh(mesh, path(name), kAsciiVtu);  // text, to be parsed here
     const std::string content = read_text(path(name));
     EXPECT_EQ(content.find("inf"), std::string::npos) << name;
     const std::vector<double> min_dihedral = vtk_cell_array(content, "min_dihedral_deg", 7);
@@ -143,7 +147,8 @@ TEST_F(FemExportTest, WritesEveryFileAndNothingElse) {
   write_all_formats(test::cube_tets(2));
   const std::set<std::string> expected{"cube_v41_ascii.msh", "cube_v41_binary.msh", "cube_v22_ascii.msh",
                                        "cube_v22_binary.msh", "cube.vtu", "cube.vtk", "cube.mesh", "cube.node",
-                                       "cube.ele", "cube.face", "cube.inp", "cube.xdmf", "cube.h5"};
+                                       "cube.ele", "cube.face", "cube.inp", "cube.xdmf", "cube.h5",
+                                       "cube_boundary.vtu", "cube_ascii.vtu", "cube_ascii_boundary.vtu"};
   EXPECT_EQ(directory_entries(), expected);
 }
 
@@ -488,6 +493,82 @@ TEST_F(FemExportTest, MalformedMeshesAreInvalidInput) {
   m.points[4].y() = std::nan("");
   expect_invalid(m, "NaN coordinate");
   EXPECT_TRUE(directory_entries().empty());
+}
+
+// ---- VTU ----
+
+// The layout ParaView writes by default: every array of the piece appended raw, each a zlib block
+// list behind a UInt64 header; only the FieldData's small name arrays are text.
+TEST_F(FemExportTest, VtuIsBinaryAsParaViewWritesIt) {
+  write_tet_mesh(test::cube_tets(2), path("cube.vtu"));
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"cube.vtu", "cube_boundary.vtu"}));
+  for (const char* name : {"cube.vtu", "cube_boundary.vtu"}) {
+    const std::string content = read_text(path(name));
+    EXPECT_EQ(content.rfind("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                            "byte_order=\"LittleEndian\" header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n",
+                            0),
+              0u)
+        << name;
+    const std::size_t piece = content.find("<Piece"), appended = content.find("<AppendedData encoding=\"raw\">\n   _");
+    ASSERT_NE(piece, std::string::npos) << name;
+    ASSERT_NE(appended, std::string::npos) << name;
+    const std::string arrays = content.substr(piece, appended - piece);
+    EXPECT_EQ(arrays.find("format=\"ascii\""), std::string::npos) << name;
+    EXPECT_NE(arrays.find("format=\"appended\" offset=\"0\""), std::string::npos) << name;
+    const bool names_a_patch = content.find("<DataArray type=\"Int32\" Name=\"boundary_1\" NumberOfTuples=\"1\" "
+                                            "NumberOfComponents=\"2\" format=\"ascii\">1 2</DataArray>") != std::string::npos;
+    EXPECT_EQ(names_a_patch, std::string(name) == "cube_boundary.vtu") << name;
+  }
+}
+
+// Issue 44 asks binary files at least three times smaller than text ones, on coordinates that
+// need all 17 digits (a real mesh's).
+TEST_F(FemExportTest, BinaryVtuIsAThirdOfAsciiOrLess) {
+  TetMesh mesh = test::cube_tets(8);
+  for (Vec3& p : mesh.points) p = p * 1.1 + Vec3(0.1, -2.5e-7, 1e5 / 7.0);
+  write_tet_mesh(mesh, path("binary.vtu"));
+  write_tet_mesh(mesh, path("ascii.vtu"), kAsciiVtu);
+  const auto size = [&](const char* name) { return fs::file_size(path(name)); };
+  EXPECT_LT(3 * size("binary.vtu"), size("ascii.vtu"));
+  EXPECT_LT(3 * size("binary_boundary.vtu"), size("ascii_boundary.vtu"));
+}
+
+// What a format cannot store is refused before anything is written, the message naming the format.
+TEST_F(FemExportTest, AnEncodingTheFormatCannotStoreIsRefused) {
+  const TetExportOptions binary{MshVersion::V41, true, false}, both{MshVersion::V41, true, true};
+  const std::vector<std::tuple<const char*, TetExportOptions, std::string>> refused{
+      {"m.inp", binary, "cannot write Abaqus/CalculiX (.inp) binary: it is a text format (binary: .msh .vtu .xdmf)"},
+      {"m.mesh", binary, "cannot write Medit (.mesh) binary"},
+      {"m.node", binary, "cannot write TetGen (.node) binary"},
+      {"m.vtk", binary, "cannot write VTK legacy (.vtk) binary"},
+      {"m.xdmf", kAsciiVtu,
+       "cannot write XDMF + HDF5 (.xdmf) as ASCII: its data is binary (ASCII: .msh .vtu .vtk .mesh .node .inp)"},
+      {"m.vtu", both, "cannot be written both binary and ASCII"}};
+  for (const auto& [name, options, message] : refused) {
+    try {
+      write_tet_mesh(test::cube_tets(1), path(name), options);
+      ADD_FAILURE() << name << ": written";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(path(name) + ": " + message, 0), 0u) << e.what();
+    }
+  }
+  EXPECT_TRUE(directory_entries().empty());
+  for (const char* name : {"m.msh", "m.vtu", "m.xdmf"}) EXPECT_NO_THROW(check_tet_export_options(name, binary)) << name;
+  for (const char* name : {"m.msh", "m.vtu", "m.vtk", "m.mesh", "m.node", "m.inp"})
+    EXPECT_NO_THROW(check_tet_export_options(name, kAsciiVtu)) << name;
+}
+
+TEST_F(FemExportTest, VtuFailureLeavesNoPartialFileSet) {
+  fs::create_directory(path("cube_boundary.vtu"));
+  EXPECT_THROW(write_tet_mesh(test::cube_tets(1), path("cube.vtu")), IoError);
+  EXPECT_EQ(directory_entries(), (std::set<std::string>{"cube_boundary.vtu"}));
+}
+
+TEST_F(FemExportTest, TetMeshFilesNameEverySibling) {
+  EXPECT_EQ(tet_mesh_files("d/x.vtu"), (std::vector<std::string>{"d/x.vtu", "d/x_boundary.vtu"}));
+  EXPECT_EQ(tet_mesh_files("x.node"), (std::vector<std::string>{"x.node", "x.ele", "x.face"}));
+  EXPECT_EQ(tet_mesh_files("x.XDMF"), (std::vector<std::string>{"x.XDMF", "x.h5"}));
+  EXPECT_EQ(tet_mesh_files("x.msh"), (std::vector<std::string>{"x.msh"}));
 }
 
 // ---- XDMF + HDF5 ----

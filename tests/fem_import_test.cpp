@@ -20,6 +20,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace meshprep {
@@ -171,7 +172,7 @@ class FemImportTest : public test::ScratchDirTest {
 struct Variant {
   const char* file;
   TetExportOptions options;
-  bool stores_boundary;  // the VTK formats store the tets only
+  bool stores_boundary;  // legacy VTK stores the tets only
   bool stores_names = false;
 };
 
@@ -214,7 +215,9 @@ INSTANTIATE_TEST_SUITE_P(EveryWriter, RoundTrip,
                                            Variant{"v22_ascii.msh", {MshVersion::V22, false}, true, true},
                                            Variant{"v22_binary.msh", {MshVersion::V22, true}, true, true},
                                            Variant{"cube.mesh", {}, true}, Variant{"cube.node", {}, true},
-                                           Variant{"cube.vtu", {}, false}, Variant{"cube.vtk", {}, false},
+                                           Variant{"cube.vtu", {}, true},
+                                           Variant{"ascii.vtu", {MshVersion::V41, false, true}, true},
+                                           Variant{"cube.vtk", {}, false},
                                            Variant{"cube.xdmf", {}, true}),
                          [](const auto& test_info) {
                            std::string name = test_info.param.file;
@@ -260,7 +263,7 @@ TEST_F(FemImportTest, InterfaceTrianglesAreKept) {
     mesh.boundary_faces.push_back(f);
     mesh.boundary_tags.push_back(7);
   }
-  for (const char* name : {"i.msh", "i.mesh", "i.node", "i.xdmf"}) {
+  for (const char* name : {"i.msh", "i.mesh", "i.node", "i.xdmf", "i.vtu"}) {
     write_tet_mesh(mesh, path(name));
     TetReadReport report;
     const TetMesh read = read_tet_mesh(path(name), &report);
@@ -488,6 +491,75 @@ TEST_F(FemImportTest, XdmfReadsBackTheNames) {
   expect_identical(mesh, read);
   EXPECT_EQ(read.boundary_names, mesh.boundary_names);  // the default names of tags 2 to 5 left out
   EXPECT_EQ(read.region_names, mesh.region_names);
+}
+
+// ---- VTU and its boundary-faces file ----
+
+TEST_F(FemImportTest, VtuReadsBackTheNamesAndSaysWhatItRead) {
+  TetMesh mesh = odd_cube();
+  mesh.boundary_names = {{1, "inlet"}, {6, "Top_Wall"}};
+  mesh.region_names = {{2, "steel"}};
+  for (const auto& [name, ascii, format] : {std::tuple{"binary.vtu", false, "vtu appended raw zlib + binary_boundary.vtu"},
+                                            std::tuple{"ascii.vtu", true, "vtu ascii + ascii_boundary.vtu"}}) {
+    SCOPED_TRACE(name);
+    write_tet_mesh(mesh, path(name), {MshVersion::V41, false, ascii});
+    TetReadReport report;
+    const TetMesh read = read_tet_mesh(path(name), &report);
+    expect_identical(mesh, read);
+    EXPECT_EQ(read.boundary_names, mesh.boundary_names);  // the default names of tags 2 to 5 left out
+    EXPECT_EQ(read.region_names, mesh.region_names);
+    EXPECT_EQ(report.format, format);
+  }
+}
+
+// Coordinates and ids spanning many of zlib's 32 KiB blocks come back bit for bit.
+TEST_F(FemImportTest, VtuOfManyCompressedBlocksRoundTripsExactly) {
+  TetMesh mesh = test::cube_tets(12, 1.0 / 3.0);  // 2197 points: 52 KiB of coordinates
+  for (Vec3& p : mesh.points) p = p * 1.1 + Vec3(0.1, -2.5e-7, 1e5 / 7.0);
+  write_tet_mesh(mesh, path("big.vtu"));
+  expect_identical(mesh, read_tet_mesh(path("big.vtu")));
+}
+
+// Without its boundary file a .vtu is the tets alone: their boundary, untagged; a file of that
+// name that is not meshprep's (no mesh_point_id) is not read.
+TEST_F(FemImportTest, VtuWithoutItsBoundaryFileHasAnUntaggedBoundary) {
+  const TetMesh mesh = odd_cube();
+  write_tet_mesh(mesh, path("cube.vtu"));
+  write_tet_mesh(mesh, path("other.vtu"));
+  std::filesystem::rename(path("other.vtu"), path("cube_boundary.vtu"));  // tets, no mesh_point_id
+  for (int pass = 0; pass < 2; ++pass) {
+    TetReadReport report;
+    const TetMesh read = read_tet_mesh(path("cube.vtu"), &report);
+    EXPECT_EQ(report.format, "vtu appended raw zlib");
+    EXPECT_EQ(read.tets, mesh.tets);
+    EXPECT_EQ(untagged(tagged_faces(read)), untagged(tagged_faces(mesh)));
+    EXPECT_EQ(report.untagged_boundary_faces, mesh.boundary_faces.size());
+    std::filesystem::remove(path("cube_boundary.vtu"));
+  }
+}
+
+// The boundary faces of another mesh are refused, not mixed in.
+TEST_F(FemImportTest, VtuBoundaryFileOfAnotherMeshIsRefused) {
+  TetMesh other = odd_cube();
+  other.points[0].x() += 1e-9;
+  write_tet_mesh(other, path("other.vtu"));
+  write_tet_mesh(odd_cube(), path("cube.vtu"));
+  std::filesystem::rename(path("other_boundary.vtu"), path("cube_boundary.vtu"));
+  expect_refused("cube_boundary.vtu", "is not where point 0 of " + path("cube.vtu") + " is", "cube.vtu");
+  // The same cube after 27 unused points: its boundary file names points 27 and up.
+  const TetMesh cube = odd_cube();
+  TetMesh shifted = cube;
+  shifted.points.insert(shifted.points.begin(), cube.points.begin(), cube.points.end());
+  for (Tetrahedron& t : shifted.tets)
+    for (std::uint32_t& v : t) v += 27;
+  for (Face& f : shifted.boundary_faces)
+    for (std::uint32_t& v : f) v += 27;
+  write_tet_mesh(shifted, path("shifted.vtu"));
+  std::filesystem::rename(path("shifted_boundary.vtu"), path("cube_boundary.vtu"));
+  expect_refused("cube_boundary.vtu",
+                 "point #1 has mesh_point_id " + std::to_string(27 + cube.boundary_faces[0][0]) + ", but " +
+                     path("cube.vtu") + " has 27 points (numbered from 0)",
+                 "cube.vtu");
 }
 
 // The .h5's name is XML text in the .xdmf: written escaped, read unescaped.

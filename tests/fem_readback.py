@@ -11,6 +11,10 @@ radius_edge_ratio and scaled_jacobian, equal to the values computed here indepen
 angles from the two faces' directions normal to each edge, the circumcentre from its linear system,
 Verdict's scaled Jacobian from each corner's edges). .msh files are also checked by Gmsh itself (`gmsh FILE -check`): exit code 0, no warning or error, and the node and
 element counts it prints must match. An .xdmf's tag grids must hold one tag per cell. .ele and .face files are covered by their .node file.
+A .vtu's boundary-faces file X_boundary.vtu (beside X.vtu) must hold triangles only, each an outward
+face of one tet of X.vtu, on the points of X.vtu that its point data "mesh_point_id"
+names, with one cell data "patch" value per triangle and its field data naming the patches as
+[tag, 2]; an empty one is checked by its header alone (meshio reads no grid without cells).
 
 Prints one line per file; exits 1 if any file fails (with the reason), 2 on bad usage.
 """
@@ -184,6 +188,70 @@ def check_with_meshio(path, file_format, num_points, num_tets, volume):
     return num_cells, summary
 
 
+def boundary_sibling_of(path):
+    """X.vtu for X_boundary.vtu when X.vtu exists, else None."""
+    if path.suffix.lower() != ".vtu" or not path.stem.endswith("_boundary"):
+        return None
+    tets_file = path.with_name(path.stem[: -len("_boundary")] + path.suffix)
+    return tets_file if tets_file.exists() else None
+
+
+def outward_tet_faces(tets):
+    """The faces of one tet each, oriented away from it: sorted corners -> oriented corners."""
+    count, oriented = {}, {}
+    for tet in tets:
+        for k in range(4):
+            face = tuple(int(tet[(k + m) % 4]) for m in (1, 2, 3))
+            # In a positive tet (0 1 2 3), 0 1 2 turns right-handed towards 3: the faces opposite
+            # corners 0 and 2, (1 2 3) and (3 0 1), turn outward, those opposite 1 and 3 inward.
+            if k % 2 == 1:
+                face = (face[0], face[2], face[1])
+            key = tuple(sorted(face))
+            count[key] = count.get(key, 0) + 1
+            oriented[key] = face
+    return {key: oriented[key] for key, n in count.items() if n == 1}
+
+
+def same_rotation(a, b):
+    """Whether triangle b is triangle a started at another corner (the same orientation)."""
+    return any(tuple(a[(k + m) % 3] for m in range(3)) == tuple(b) for k in range(3))
+
+
+def check_boundary_vtu(path, tets_file):
+    """X_boundary.vtu against X.vtu (see the module's doc)."""
+    cells = re.search(rb'NumberOfCells="(\d+)"', path.read_bytes()[:4096])
+    if cells is None:
+        raise Failure("no NumberOfCells in its <Piece>")
+    if int(cells.group(1)) == 0:
+        return "no boundary faces (an empty grid: meshio reads none)"
+    tets_mesh = meshio.read(tets_file, file_format="vtu")
+    points = np.asarray(tets_mesh.points, dtype=float)
+    faces = outward_tet_faces(np.vstack([b.data for b in tets_mesh.cells if b.type == "tetra"]))
+    try:
+        mesh = meshio.read(path, file_format="vtu")
+    except Exception as error:
+        raise Failure(f"meshio cannot read it: {type(error).__name__}: {error}") from error
+    if any(block.type != "triangle" for block in mesh.cells):
+        raise Failure(f"cell types {sorted({b.type for b in mesh.cells})}, expected triangles only")
+    triangles = np.vstack([block.data for block in mesh.cells])
+    ids = np.asarray(mesh.point_data.get("mesh_point_id", np.empty(0)), dtype=np.int64).reshape(-1)
+    if len(ids) != len(mesh.points):
+        raise Failure(f"{len(ids)} mesh_point_id values for {len(mesh.points)} points")
+    if np.any(ids < 0) or np.any(ids >= len(points)) or not np.array_equal(mesh.points, points[ids]):
+        raise Failure(f"its points are not the points of {tets_file.name} that mesh_point_id names")
+    patches = np.concatenate([np.asarray(b).reshape(-1) for b in mesh.cell_data.get("patch", [])] or [np.empty(0)])
+    if len(patches) != len(triangles) or np.any(patches < 1):
+        raise Failure(f"{len(patches)} patch values (each >= 1) for {len(triangles)} triangles")
+    for triangle in ids[triangles]:
+        face = faces.get(tuple(sorted(int(v) for v in triangle)))
+        if face is None or not same_rotation(face, [int(v) for v in triangle]):
+            raise Failure(f"triangle {list(triangle)} is not an outward face of one tet of {tets_file.name}")
+    named = {int(value.reshape(-1)[0]) for value in mesh.field_data.values() if value.reshape(-1)[1] == 2}
+    if named != {int(tag) for tag in patches}:
+        raise Failure(f"field data names the patches {sorted(named)}, the triangles have {sorted(set(patches))}")
+    return f"meshio ok: {len(triangles)} outward boundary faces of {tets_file.name}, {len(named)} named patches"
+
+
 def check_with_gmsh(path, num_points, num_cells):
     command = ["gmsh", str(path), "-check", "-nopopup"]
     try:
@@ -210,6 +278,9 @@ def check_file(path, num_points, num_tets, volume):
         if not path.with_suffix(SIBLINGS[suffix]).exists():
             raise Failure(f"no {SIBLINGS[suffix]} file beside it")
         return f"read with its {SIBLINGS[suffix]} file"
+    tets_file = boundary_sibling_of(path)
+    if tets_file is not None:
+        return check_boundary_vtu(path, tets_file)
     if suffix not in MESHIO_FORMATS:
         raise Failure(f"no read-back check for '{suffix}' files")
     num_cells, summary = check_with_meshio(path, MESHIO_FORMATS[suffix], num_points, num_tets, volume)

@@ -3,6 +3,7 @@
 #include "meshprep/fem/export.h"
 
 #include "exporters.h"
+#include "vtu_files.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/patch_names.h"
 
@@ -23,19 +24,36 @@ using RoundingWriter = void (*)(const TetMesh&, const std::string&, TetExportRep
 
 struct Format {
   const char* extension;
+  const char* name;         // for messages
+  bool binary, ascii;       // whether it can store numbers in binary, in ASCII
   Writer write = nullptr;
   RoundingWriter write_rounding = nullptr;  // instead of write
 };
 
 const std::array<Format, 7> formats{{
-    {".msh", [](const TetMesh& m, const std::string& p, const TetExportOptions& o) { detail::write_gmsh(m, p, o); }},
-    {".vtu", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtu(m, p); }},
-    {".vtk", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtk_legacy(m, p); }},
-    {".mesh", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_medit(m, p); }},
-    {".node", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_tetgen(m, p); }},
-    {".inp", nullptr, [](const TetMesh& m, const std::string& p, TetExportReport& r) { detail::write_abaqus(m, p, r); }},
-    {".xdmf", [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_xdmf(m, p); }},
+    {".msh", "Gmsh", true, true,
+     [](const TetMesh& m, const std::string& p, const TetExportOptions& o) { detail::write_gmsh(m, p, o); }},
+    {".vtu", "VTK XML", true, true,
+     [](const TetMesh& m, const std::string& p, const TetExportOptions& o) { detail::write_vtu(m, p, o); }},
+    {".vtk", "VTK legacy", false, true,
+     [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_vtk_legacy(m, p); }},
+    {".mesh", "Medit", false, true,
+     [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_medit(m, p); }},
+    {".node", "TetGen", false, true,
+     [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_tetgen(m, p); }},
+    {".inp", "Abaqus/CalculiX", false, true, nullptr,
+     [](const TetMesh& m, const std::string& p, TetExportReport& r) { detail::write_abaqus(m, p, r); }},
+    {".xdmf", "XDMF + HDF5", true, false,
+     [](const TetMesh& m, const std::string& p, const TetExportOptions&) { detail::write_xdmf(m, p); }},
 }};
+
+// The extensions of the formats that can store numbers as asked ("binary" or "ascii").
+std::string formats_that_can(bool Format::*can) {
+  std::string list;
+  for (const Format& format : formats)
+    if (format.*can) list += std::string(list.empty() ? "" : " ") + format.extension;
+  return list;
+}
 
 std::string lowercase_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
@@ -126,9 +144,30 @@ std::vector<int> distinct_tags(const std::vector<int>& tags) {
 
 }  // namespace detail
 
+std::vector<std::string> tet_mesh_files(const std::string& path) {
+  const std::string extension = lowercase_extension(path);
+  const auto sibling = [&](const char* other) { return std::filesystem::path(path).replace_extension(other).string(); };
+  if (extension == ".node") return {path, sibling(".ele"), sibling(".face")};
+  if (extension == ".xdmf") return {path, sibling(".h5")};
+  if (extension == ".vtu") return {path, detail::vtu_boundary_path(path)};
+  return {path};
+}
+
+void check_tet_export_options(const std::string& path, const TetExportOptions& options) {
+  const Format& format = format_for(path);
+  if (options.binary && options.ascii) throw InvalidInput(path + ": cannot be written both binary and ASCII");
+  if (options.binary && !format.binary)
+    throw InvalidInput(path + ": cannot write " + format.name + " (" + format.extension +
+                       ") binary: it is a text format (binary: " + formats_that_can(&Format::binary) + ")");
+  if (options.ascii && !format.ascii)
+    throw InvalidInput(path + ": cannot write " + format.name + " (" + format.extension +
+                       ") as ASCII: its data is binary (ASCII: " + formats_that_can(&Format::ascii) + ")");
+}
+
 void write_tet_mesh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options,
                     TetExportReport* report) {
   const Format& format = format_for(path);
+  check_tet_export_options(path, options);
   validate(mesh, path);
   TetExportReport written;
   if (format.write_rounding)

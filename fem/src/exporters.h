@@ -12,7 +12,7 @@
 namespace meshprep::detail {
 
 void write_gmsh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options);
-void write_vtu(const TetMesh& mesh, const std::string& path);
+void write_vtu(const TetMesh& mesh, const std::string& path, const TetExportOptions& options);
 void write_vtk_legacy(const TetMesh& mesh, const std::string& path);
 void write_medit(const TetMesh& mesh, const std::string& path);
 void write_tetgen(const TetMesh& mesh, const std::string& path);

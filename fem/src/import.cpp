@@ -56,7 +56,7 @@ struct Format {
 
 const std::array<Format, 7> formats{{
     {"msh", TetFormat::Gmsh},
-    {"vtu", TetFormat::Vtu},
+    {"vtu", std::nullopt, read_vtu_file},
     {"vtk", TetFormat::VtkLegacy},
     {"mesh", TetFormat::Medit},
     {"node", std::nullopt, read_tetgen_files},

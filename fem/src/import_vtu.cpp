@@ -11,16 +11,29 @@
 // one after the other (so padding may end the header's), meshio as one when uncompressed:
 // decoding four characters at a time, with padding allowed in any group, reads both.
 //
-// Only what a tet mesh needs is read: the points, the cells' connectivity, offsets and types, and
-// a region array among the cell data (vtk_cells.h); everything else is skipped unread.
+// Only what a tet mesh needs is read: the points, the cells' connectivity, offsets and types, a
+// region array among the cell data (vtk_cells.h), the point data "mesh_point_id" and the tag names
+// of the FieldData (one integer array [tag, dimension] per name, export_vtu.cpp); everything else
+// is skipped unread.
+//
+// A file x.vtu is read with the x_boundary.vtu beside it, when that is meshprep's boundary-faces
+// file (it has the point data "mesh_point_id"): its triangles, on x.vtu's points through
+// mesh_point_id, with their "patch" tags and its names (read_vtu_file). Each of its points must be
+// where the x.vtu point it names is: a boundary file of another mesh is refused, not mixed in.
 #include "importers.h"
 #include "vtk_cells.h"
 #include "vtu_blocks.h"
+#include "vtu_files.h"
 #include "xml_scanner.h"
+
+#include "meshprep/core/io.h"
+#include "meshprep/core/patch_names.h"
 
 #include "readers.h"
 #include "text_scanner.h"
 
+#include <cmath>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
@@ -30,6 +43,7 @@ namespace {
 struct DataArray {
   std::string_view name, type, format;
   std::uint64_t components = 1;
+  std::uint64_t tuples = 1;  // field data only
   std::uint64_t offset = 0;  // appended only
   std::string_view text;     // ascii and binary only
   std::size_t tag_offset = 0;
@@ -37,12 +51,12 @@ struct DataArray {
 
 struct Piece {
   std::uint64_t num_points = 0, num_cells = 0;
-  std::optional<DataArray> points, connectivity, offsets, types, region;
+  std::optional<DataArray> points, connectivity, offsets, types, region, mesh_point_id;
   int region_rank = 0;  // region_array_rank of `region`
   std::size_t tag_offset = 0;
 };
 
-enum class Container { None, Points, Cells, CellData, Other };
+enum class Container { None, Points, Cells, CellData, PointData, FieldData, Other };
 
 std::optional<VtkType> vtk_type(std::string_view name) {
   const std::pair<std::string_view, VtkType> types[] = {
@@ -56,15 +70,22 @@ std::optional<VtkType> vtk_type(std::string_view name) {
   return std::nullopt;
 }
 
+// What a file holds besides the mesh: each point's mesh_point_id (when every piece has them).
+struct VtuExtras {
+  std::optional<std::vector<double>> mesh_point_ids;
+};
+
 class VtuReader {
  public:
   VtuReader(const std::string& name, std::string_view data) : name_(name), data_(data), xml_(name, data) {}
 
-  TetFileContent read() {
+  TetFileContent read(VtuExtras* extras = nullptr) {
     read_structure();
     if (pieces_.empty()) fail(name_, "no <Piece> in the <UnstructuredGrid>");
     for (const Piece& piece : pieces_) read_piece(piece);
+    read_tag_names();
     content_.format = "vtu " + format_name_ + (block_.zlib ? " zlib" : "");
+    if (extras && every_piece_has_ids_) extras->mesh_point_ids = std::move(mesh_point_ids_);
     return std::move(content_);
   }
 
@@ -95,27 +116,56 @@ class VtuReader {
     block_.zlib = !compressor.empty();
   }
 
-  void add_array(Piece& piece, Container container, const XmlTag& tag) {
+  DataArray data_array(const XmlTag& tag) const {
     DataArray array;
     array.name = tag.attribute("Name").value_or("");
     array.type = tag.attribute("type").value_or("");
     array.format = tag.attribute("format").value_or("ascii");
     array.components = number_attribute(tag, "NumberOfComponents", 1);
+    array.tuples = number_attribute(tag, "NumberOfTuples", 1);
     array.offset = number_attribute(tag, "offset", 0);
     array.tag_offset = tag.begin;
     if (!tag.self_closing) array.text = data_.substr(tag.end, data_.find('<', tag.end) - tag.end);
+    return array;
+  }
+
+  void add_array(Piece& piece, Container container, const XmlTag& tag) {
+    const DataArray array = data_array(tag);
     if (container == Container::Points) {
       if (!piece.points) piece.points = array;
     } else if (container == Container::Cells) {
       if (array.name == "connectivity") piece.connectivity = array;
       if (array.name == "offsets") piece.offsets = array;
       if (array.name == "types") piece.types = array;
+    } else if (container == Container::PointData) {
+      if (array.name == "mesh_point_id") piece.mesh_point_id = array;
     } else if (container == Container::CellData) {
       const int rank = region_array_rank(array.name);
       if (rank >= 0 && (!piece.region || rank < piece.region_rank)) {
         piece.region = array;
         piece.region_rank = rank;
       }
+    }
+  }
+
+  // A FieldData array that may name a tag: two integer values, [tag, dimension].
+  void add_field_array(const XmlTag& tag) {
+    const DataArray array = data_array(tag);
+    const std::optional<VtkType> type = vtk_type(array.type);
+    if (type && *type != VtkType::Float32 && *type != VtkType::Float64 && array.components * array.tuples == 2)
+      field_arrays_.push_back(array);
+  }
+
+  // The names of the FieldData: dimension 3 names a region, 2 a boundary tag; a default name
+  // (region_<r>, boundary_<t>, which the writer gives a tag without one) names nothing.
+  void read_tag_names() {
+    for (const DataArray& array : field_arrays_) {
+      const std::vector<double> values = decode(array, 2);
+      const std::optional<int> tag = integral_tag(values[0]);
+      if (!tag || *tag < 1 || (values[1] != 2 && values[1] != 3)) continue;
+      const char* prefix = values[1] == 3 ? "region" : "boundary";
+      const std::string name(array.name);
+      if (name != tag_name({}, *tag, prefix)) (values[1] == 3 ? content_.region_names : content_.triangle_names)[*tag] = name;
     }
   }
 
@@ -141,12 +191,16 @@ class VtuReader {
         piece->num_points = number_attribute(tag, "NumberOfPoints", 0);
         piece->num_cells = number_attribute(tag, "NumberOfCells", 0);
         piece->tag_offset = tag.begin;
-      } else if (tag.name == "Points" || tag.name == "Cells" || tag.name == "CellData" || tag.name == "PointData") {
+      } else if (tag.name == "Points" || tag.name == "Cells" || tag.name == "CellData" || tag.name == "PointData" ||
+                 tag.name == "FieldData") {
         container = tag.closing || tag.self_closing ? Container::None
                     : tag.name == "Points"          ? Container::Points
                     : tag.name == "Cells"           ? Container::Cells
                     : tag.name == "CellData"        ? Container::CellData
-                                                    : Container::Other;
+                    : tag.name == "PointData"       ? Container::PointData
+                                                    : Container::FieldData;
+      } else if (tag.name == "DataArray" && !tag.closing && container == Container::FieldData && !piece) {
+        add_field_array(tag);
       } else if (tag.name == "DataArray" && !tag.closing && piece) {
         add_array(*piece, container, tag);
       }
@@ -223,6 +277,7 @@ class VtuReader {
   }
 
   void read_piece(const Piece& piece) {
+    read_mesh_point_ids(piece);
     const std::size_t first_point = content_.points.size();
     if (piece.num_points > 0) {
       const DataArray& points = required(piece.points, piece, "Points");
@@ -246,6 +301,18 @@ class VtuReader {
     add_vtk_cells(content_, cells, first_point, static_cast<std::size_t>(piece.num_points), name_);
   }
 
+  void read_mesh_point_ids(const Piece& piece) {
+    if (!piece.mesh_point_id) {
+      every_piece_has_ids_ = false;
+      return;
+    }
+    if (piece.mesh_point_id->components != 1)
+      xml_.fail_at(piece.mesh_point_id->tag_offset, "mesh_point_id has " + std::to_string(piece.mesh_point_id->components) +
+                                                        " components, not 1");
+    const std::vector<double> ids = decode(*piece.mesh_point_id, piece.num_points);
+    mesh_point_ids_.insert(mesh_point_ids_.end(), ids.begin(), ids.end());
+  }
+
   const std::string& name_;
   std::string_view data_;
   XmlScanner xml_;
@@ -254,11 +321,58 @@ class VtuReader {
   bool has_appended_ = false, appended_base64_ = false;
   std::string_view appended_;
   std::string format_name_;
+  std::vector<DataArray> field_arrays_;
+  std::vector<double> mesh_point_ids_;
+  bool every_piece_has_ids_ = true;
   TetFileContent content_;
 };
+
+// The boundary faces, tags and names of meshprep's boundary-faces file `path` added to `content`
+// (x.vtu's, read from `mesh_name`). Returns false, adding nothing, when the file is not one
+// (no mesh_point_id).
+bool add_boundary_file(TetFileContent& content, const std::string& mesh_name, const std::string& path) {
+  const std::string data = read_input_file(path);
+  if (data.empty()) fail(path, "empty file");
+  VtuExtras extras;
+  TetFileContent boundary = VtuReader(path, data).read(&extras);
+  if (!extras.mesh_point_ids) return false;
+  if (!boundary.tets.empty())
+    fail(path, std::to_string(boundary.tets.size()) + " tetrahedra: a boundary-faces file holds triangles only");
+  const std::vector<double>& ids = *extras.mesh_point_ids;
+  std::vector<std::uint32_t> to_mesh(ids.size());
+  for (std::size_t p = 0; p < ids.size(); ++p) {
+    const std::optional<int> id = integral_tag(ids[p]);
+    if (!id || *id < 0 || static_cast<std::size_t>(*id) >= content.points.size())
+      fail(path, "point #" + std::to_string(p + 1) + " has mesh_point_id " + number_text(ids[p]) + ", but " + mesh_name +
+                     " has " + std::to_string(content.points.size()) + " points (numbered from 0)");
+    to_mesh[p] = static_cast<std::uint32_t>(*id);
+    if (boundary.points[p] != content.points[to_mesh[p]])
+      fail(path, "point #" + std::to_string(p + 1) + " is not where point " + std::to_string(*id) + " of " + mesh_name +
+                     " is: the boundary faces of another mesh?");
+  }
+  for (std::size_t f = 0; f < boundary.triangles.size(); ++f) {
+    const Triangle& t = boundary.triangles[f];
+    content.triangles.push_back({to_mesh[t[0]], to_mesh[t[1]], to_mesh[t[2]]});
+    content.triangle_tags.push_back(boundary.triangle_tags[f]);
+  }
+  content.triangle_names.insert(boundary.triangle_names.begin(), boundary.triangle_names.end());
+  content.elements_ignored += boundary.elements_ignored;
+  return true;
+}
 
 }  // namespace
 
 TetFileContent read_vtu(const std::string& name, std::string_view data) { return VtuReader(name, data).read(); }
+
+TetMesh read_vtu_file(const std::string& path, TetReadReport* report) {
+  const std::string data = read_input_file(path);
+  if (data.empty()) fail(path, "empty file");
+  TetFileContent content = read_vtu(path, data);
+  const std::string boundary = vtu_boundary_path(path);
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(boundary, ec) && add_boundary_file(content, path, boundary))
+    content.format += " + " + std::filesystem::path(boundary).filename().string();
+  return assemble_tet_mesh(std::move(content), path, report);
+}
 
 }  // namespace meshprep::detail

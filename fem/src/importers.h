@@ -49,6 +49,10 @@ TetFileContent read_tetgen(const TetgenTexts& texts);
 /// `data` itself.
 TetFileContent read_xdmf(const std::string& name, std::string_view data, const std::string& folder);
 
+/// read_tet_mesh on a .vtu file, with the boundary faces, tags and names of the x_boundary.vtu
+/// beside it when that is meshprep's (import_vtu.cpp).
+TetMesh read_vtu_file(const std::string& path, TetReadReport* report);
+
 /// read_tet_mesh on an .xdmf file (and the HDF5 files it names).
 TetMesh read_xdmf_file(const std::string& path, TetReadReport* report);
 

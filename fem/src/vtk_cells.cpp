@@ -123,7 +123,7 @@ std::vector<double> load_values(std::string_view bytes, VtkType type, std::size_
 }
 
 int region_array_rank(std::string_view name) {
-  const std::string_view names[] = {"region", "gmsh:physical", "CellEntityIds", "medit:ref", "tetgen:ref"};
+  const std::string_view names[] = {"region", "gmsh:physical", "CellEntityIds", "medit:ref", "tetgen:ref", "patch"};
   for (int rank = 0; rank < static_cast<int>(std::size(names)); ++rank)
     if (name == names[rank]) return rank;
   return -1;

@@ -20,7 +20,8 @@ std::size_t size_of(VtkType type);
 std::vector<double> load_values(std::string_view bytes, VtkType type, std::size_t count, bool little_endian);
 
 /// The rank of a cell-data array's name among the region arrays (region, gmsh:physical,
-/// CellEntityIds, medit:ref, tetgen:ref: 0, 1, ...), or -1 if it is not one.
+/// CellEntityIds, medit:ref, tetgen:ref, patch (meshprep's boundary tags): 0, 1, ...), or -1 if it
+/// is not one.
 int region_array_rank(std::string_view name);
 
 /// The cells of a VTK piece. Cell c's point ids are connectivity[offsets[c - 1] .. offsets[c]]

@@ -14,6 +14,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -25,14 +26,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every file name a tet mesh of any format may have (node writes three, xdmf two).
-const std::vector<std::string> kTetFiles = {"tets.msh", "tets.vtu",  "tets.mesh", "tets.inp", "tets.node",
-                                            "tets.ele", "tets.face", "tets.xdmf", "tets.h5"};
+// The files of the tet mesh in `format` (tet_mesh_files: node writes three, xdmf and vtu two).
+std::vector<std::string> tet_files_of(const std::string& format) { return tet_mesh_files("tets." + format); }
 
-std::vector<std::string> tet_files_of(const std::string& format) {
-  if (format == "node") return {"tets.node", "tets.ele", "tets.face"};
-  if (format == "xdmf") return {"tets.xdmf", "tets.h5"};
-  return {"tets." + format};
+// Every file name a tet mesh of any format may have.
+std::vector<std::string> all_tet_files() {
+  std::vector<std::string> files;
+  for (const char* format : {"msh", "vtu", "mesh", "inp", "node", "xdmf"})
+    for (const std::string& file : tet_files_of(format)) files.push_back(file);
+  return files;
 }
 
 const char kStagingPrefix[] = ".meshprep-staging-";
@@ -190,7 +192,7 @@ std::vector<std::string> write_pipeline_outputs(const PipelineResult& result, co
       throw WriteError(target + ": cannot write: " + std::strerror(errno));
   }
   created.keep();
-  for (const std::string& name : kTetFiles)  // an earlier run's tets that this run did not replace
+  for (const std::string& name : all_tet_files())  // an earlier run's tets that this run did not replace
     if (std::find(tet_names.begin(), tet_names.end(), name) == tet_names.end()) {
       std::error_code ignored;
       fs::remove(fs::path(outdir) / name, ignored);

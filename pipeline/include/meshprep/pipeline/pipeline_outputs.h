@@ -5,7 +5,7 @@
 /// | file | content |
 /// | --- | --- |
 /// | surface.ply | the final surface, with the surface variation sigma per vertex |
-/// | tets.<format> | the tet mesh (msh, vtu, mesh, inp; node writes tets.node, .ele, .face; xdmf tets.xdmf, .h5) |
+/// | tets.<format> | the tet mesh (msh, mesh, inp; node writes tets.node, .ele, .face; xdmf tets.xdmf, .h5; vtu tets.vtu, tets_boundary.vtu) |
 /// | report.html | one self-contained page: stages, histograms, pictures, FEM readiness |
 /// | report.json | the same figures for machines (pipeline_summary) |
 /// | report.vtu | the final surface with per-face quality as cell data (ParaView) |
@@ -29,7 +29,8 @@ namespace meshprep {
 void check_output_dir(const std::string& outdir);
 
 /// The names of the files a run writes into its folder: surface.ply, tets.<format> (TetGen's
-/// format: three files, XDMF two) when `with_tets`, report.html, report.json, report.vtu, pipeline.json.
+/// format: three files, XDMF and VTU two) when `with_tets`, report.html, report.json, report.vtu,
+/// pipeline.json.
 std::vector<std::string> pipeline_output_names(const PipelineConfig& config, bool with_tets);
 
 /// The versions of meshprep and of the libraries it was built with.

@@ -1,0 +1,124 @@
+// VTK XML unstructured grids (.vtu, "VTK File Formats",
+// https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html), two files:
+//
+// x.vtu           the tets (VTK_TETRA, cell type 10) with the region as Int32 cell data "region"
+//                 and each tet's quality as Float64 cell data (vtk_cell_quality.h);
+// x_boundary.vtu  the boundary faces (VTK_TRIANGLE, 5), outward, on the points they use, with the
+//                 boundary tag as Int32 cell data "patch" and, as Int64 point data "mesh_point_id",
+//                 each point's 0-based index in x.vtu (which import_vtu.cpp reads them back by).
+//
+// Each file names its tags in use in its FieldData, one Int32 array per name holding [tag,
+// dimension] (3 for a region, 2 for a patch): meshio reads it as field_data {name: [tag, dim]},
+// its form for Gmsh's physical names, and ParaView lists it. A tag without a name gets its default
+// one (patch_names.h's tag_name: region_<r>, boundary_<t>), as the Gmsh and XDMF writers do.
+//
+// Data: binary by default, as ParaView writes (appended raw, zlib, vtu_writer.h); ASCII on request
+// (TetExportOptions::ascii). Both files are written before either is renamed into place.
+//
+// Orientation: vtkTetra's points 0,1,2 form a triangle whose right-hand normal points towards
+// point 3 - positive volume in TetMesh's sense, so tets are written in their own order.
+#include "exporters.h"
+#include "vtk_cell_quality.h"
+#include "vtu_files.h"
+#include "vtu_writer.h"
+
+#include "meshprep/core/atomic_file.h"
+#include "meshprep/core/patch_names.h"
+
+#include <cstdint>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace meshprep::detail {
+namespace {
+
+std::vector<VtuTagName> tag_names(const TagNames& names, const std::vector<int>& tags, const char* prefix,
+                                  int dimension) {
+  std::vector<VtuTagName> named;
+  for (const int tag : distinct_tags(tags)) named.push_back({tag_name(names, tag, prefix), tag, dimension});
+  return named;
+}
+
+// Offsets 0-based ends of each cell's `corners` point ids; the cell type of each.
+void set_cells(VtuPiece& piece, std::vector<std::int64_t> connectivity, std::size_t corners, std::uint8_t type) {
+  std::vector<std::int64_t> offsets(piece.num_cells);
+  for (std::size_t c = 0; c < piece.num_cells; ++c) offsets[c] = static_cast<std::int64_t>(corners * (c + 1));
+  piece.connectivity = vtu_array("connectivity", connectivity, 1, corners);
+  piece.offsets = vtu_array("offsets", offsets);
+  piece.types = vtu_array("types", std::vector<std::uint8_t>(piece.num_cells, type));
+}
+
+VtuArray points_array(const std::vector<Vec3>& points) {
+  std::vector<double> xyz;
+  xyz.reserve(3 * points.size());
+  for (const Vec3& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  return vtu_array("", xyz, 3, 3);
+}
+
+VtuPiece tets_piece(const TetMesh& mesh) {
+  VtuPiece piece;
+  piece.num_points = mesh.points.size();
+  piece.num_cells = mesh.tets.size();
+  piece.points = points_array(mesh.points);
+  std::vector<std::int64_t> connectivity;
+  connectivity.reserve(4 * mesh.tets.size());
+  for (const Tetrahedron& t : mesh.tets) connectivity.insert(connectivity.end(), t.begin(), t.end());
+  set_cells(piece, std::move(connectivity), 4, kVtkTetra);
+  piece.cell_scalars = "region";
+  piece.cell_data.push_back(vtu_array("region", std::vector<std::int32_t>(mesh.tet_regions.begin(), mesh.tet_regions.end())));
+  const std::vector<TetShape> shapes = tet_shapes(mesh);
+  for (const VtkQualityArray& array : kVtkQualityArrays) {
+    std::vector<double> values(shapes.size());
+    for (std::size_t t = 0; t < shapes.size(); ++t) values[t] = vtk_cell_value(shapes[t].*array.field);
+    piece.cell_data.push_back(vtu_array(array.name, values));
+  }
+  piece.tag_names = tag_names(mesh.region_names, mesh.tet_regions, "region", 3);
+  return piece;
+}
+
+// The boundary faces on the points they use, in order of first use.
+VtuPiece boundary_piece(const TetMesh& mesh) {
+  VtuPiece piece;
+  std::map<std::uint32_t, std::int64_t> local;  // mesh point -> its index here
+  std::vector<std::int64_t> mesh_point_id, connectivity;
+  std::vector<Vec3> points;
+  for (const Triangle& face : mesh.boundary_faces)
+    for (const std::uint32_t v : face) {
+      const auto [it, added] = local.emplace(v, static_cast<std::int64_t>(points.size()));
+      if (added) {
+        points.push_back(mesh.points[v]);
+        mesh_point_id.push_back(v);
+      }
+      connectivity.push_back(it->second);
+    }
+  piece.num_points = points.size();
+  piece.num_cells = mesh.boundary_faces.size();
+  piece.point_data.push_back(vtu_array("mesh_point_id", mesh_point_id));
+  piece.points = points_array(points);
+  set_cells(piece, std::move(connectivity), 3, kVtkTriangle);
+  piece.cell_scalars = "patch";
+  piece.cell_data.push_back(vtu_array("patch", std::vector<std::int32_t>(mesh.boundary_tags.begin(), mesh.boundary_tags.end())));
+  piece.tag_names = tag_names(mesh.boundary_names, mesh.boundary_tags, "boundary", 2);
+  return piece;
+}
+
+}  // namespace
+
+// The two writes are nested so that both temporary files are complete before the first rename.
+void write_vtu(const TetMesh& mesh, const std::string& path, const TetExportOptions& options) {
+  const bool binary = !options.ascii;
+  write_file_atomically(
+      path,
+      [&](std::ostream& tets_out) {
+        write_vtu_piece(tets_out, tets_piece(mesh), binary);
+        tets_out.flush();
+        write_file_atomically(
+            vtu_boundary_path(path),
+            [&](std::ostream& boundary_out) { write_vtu_piece(boundary_out, boundary_piece(mesh), binary); }, binary);
+      },
+      binary);
+}
+
+}  // namespace meshprep::detail
