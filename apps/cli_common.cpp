@@ -47,12 +47,8 @@ bool is_character_device(const std::string& path) {
 }  // namespace
 
 std::vector<std::string> files_of(const std::string& path) {
-  const std::string extension = extension_of(path);
-  if (extension == "xdmf") return {path, fs::path(path).replace_extension(".h5").string()};
-  if (extension != "node" && extension != "ele") return {path};
-  std::vector<std::string> files;
-  for (const char* sibling : {".node", ".ele", ".face"}) files.push_back(fs::path(path).replace_extension(sibling).string());
-  return files;
+  if (extension_of(path) == "ele") return tet_mesh_files(fs::path(path).replace_extension(".node").string());
+  return tet_mesh_files(path);
 }
 
 void ensure_distinct_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
@@ -125,17 +121,27 @@ void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags) {
   add_override(cmd, p.max_inverted_tets, flags.max_inverted_tets, defaults.max_inverted_tets);
 }
 
+void add_encoding_options(CLI::App& cmd, EncodingFlags& flags, const std::string& binary_help) {
+  auto* binary = cmd.add_flag("--binary", flags.binary, binary_help);
+  cmd.add_flag("--ascii", flags.ascii, "ASCII .vtu instead of its zlib-compressed binary data")->excludes(binary);
+}
+
 TetExportOptions tet_export_options(const std::string& output, const std::string& target, const std::string& msh_version,
-                                    bool binary) {
+                                    const EncodingFlags& encoding) {
+  TetExportOptions options;
   if (!target.empty()) {
     const SolverTarget& t = find_solver_target(target);
     if (extension_of(output) != t.extension.substr(1))
       throw InvalidInput(output + ": target " + t.name + " reads " + t.extension + " files");
-    return t.options;
+    if (encoding.binary && !t.options.binary)
+      throw InvalidInput(output + ": --binary: target " + t.name + " reads ASCII " + t.extension + " files");
+    options = t.options;
+  } else {
+    options.msh_version = msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+    options.binary = encoding.binary;
   }
-  TetExportOptions options;
-  options.msh_version = msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
-  options.binary = binary;
+  options.ascii = encoding.ascii;
+  check_tet_export_options(output, options);
   return options;
 }
 

@@ -30,8 +30,10 @@ class WorkFailed : public std::runtime_error {
 /// Write `json` to `target`: "-" is stdout, anything else a file written atomically.
 void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 
-/// The files a mesh path stands for: TetGen's .node or .ele stands for its .node, .ele and .face;
-/// an .xdmf for itself and the .h5 beside it (what write_tet_mesh writes); any other path for itself.
+/// The files a mesh path stands for, what write_tet_mesh writes and read_tet_mesh reads
+/// (tet_mesh_files): TetGen's .node or .ele stands for its .node, .ele and .face; an .xdmf for
+/// itself and the .h5 beside it; a .vtu for itself and its <stem>_boundary.vtu; any other path for
+/// itself.
 std::vector<std::string> files_of(const std::string& path);
 
 /// Checks the files of a run before any work: no output may be an input (outputs never clobber
@@ -77,11 +79,22 @@ struct ThresholdFlags {
 /// bound to `flags`; the help gives TetThresholds' defaults.
 void add_threshold_options(CLI::App& cmd, ThresholdFlags& flags);
 
+/// --binary and --ascii as given: binary data where a format's default is ASCII (.msh, PLY, STL),
+/// ASCII where it is binary (.vtu).
+struct EncodingFlags {
+  bool binary = false, ascii = false;
+};
+
+/// Registers --binary (with `binary_help`) and --ascii on `cmd`, excluding each other, bound to `flags`.
+void add_encoding_options(CLI::App& cmd, EncodingFlags& flags, const std::string& binary_help);
+
 /// How to write the tets to `output`: a solver target's options (target not empty; its extension
-/// must be output's), else the .msh version ("4.1" or "2.2") and binary flag.
-/// \throws InvalidInput for an unknown target or an output of another extension.
+/// must be output's), else the .msh version ("4.1" or "2.2") and the encoding flags. Checked
+/// before any work (check_tet_export_options): --binary for a text format (.inp, .mesh, .node,
+/// .vtk, a target that reads ASCII) or --ascii for .xdmf is refused, naming the format.
+/// \throws InvalidInput for an unknown target, an output of another extension, or such a flag.
 TetExportOptions tet_export_options(const std::string& output, const std::string& target, const std::string& msh_version,
-                                    bool binary);
+                                    const EncodingFlags& encoding);
 
 /// Notes on stderr, in one line, that writing `output` rounded coordinates to fit the format
 /// (TetExportReport; .inp's 20-character fields), with how many and by how much; nothing when none.

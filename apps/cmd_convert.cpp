@@ -1,4 +1,4 @@
-// meshprep convert IN -o OUT [--binary] [--msh-version 4.1|2.2] [--json FILE|-]: between the
+// meshprep convert IN -o OUT [--binary | --ascii] [--msh-version 4.1|2.2] [--json FILE|-]: between the
 // surface formats, or between the tet mesh formats, without changing the mesh. (OUT may also come
 // second, as before -o was added.)
 #include "cli_common.h"
@@ -18,7 +18,7 @@ namespace {
 
 struct ConvertOptions {
   std::string input, output, json, msh_version = "4.1";
-  bool binary = false;
+  EncodingFlags encoding;
 };
 
 // The line on stdout (unless the JSON goes there) and the JSON file.
@@ -44,12 +44,11 @@ void write_naming_both(const ConvertOptions& o, Write write) {
 
 int convert_tet_mesh(const ConvertOptions& o) {
   ensure_distinct_files({o.input}, {o.output, o.json});
+  TetExportOptions options;  // checked before the input is read: binary .inp is bad usage, whatever the input
+  write_naming_both(o, [&] { options = tet_export_options(o.output, "", o.msh_version, o.encoding); });
   TetReadReport read;
   const TetMesh mesh = read_tet_mesh(o.input, &read);
   note_read_changes(read);
-  TetExportOptions options;
-  options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
-  options.binary = o.binary;
   TetExportReport written;
   write_naming_both(o, [&] { write_tet_mesh(mesh, o.output, options, &written); });
   note_export_rounding(o.output, written);
@@ -60,12 +59,22 @@ int convert_tet_mesh(const ConvertOptions& o) {
   return kSuccess;
 }
 
+// --binary for a surface format that is text only (OFF, OBJ), refused before any work; --ascii
+// asks what every surface writer does unless --binary.
+void check_surface_encoding(const ConvertOptions& o) {
+  const std::string extension = extension_of(o.output);
+  if (o.encoding.binary && (extension == "off" || extension == "obj"))
+    throw InvalidInput(o.output + ": cannot write " + (extension == "off" ? "OFF" : "OBJ") +
+                       " binary: it is a text format (binary: .ply .stl)");
+}
+
 int convert_surface(const ConvertOptions& o) {
   ensure_distinct_files({o.input}, {o.output, o.json});
+  check_surface_encoding(o);
   ReadReport read;
   const TriangleSoup soup = read_soup(o.input, &read);
   WriteOptions options;
-  options.binary = o.binary;
+  options.binary = o.encoding.binary;
   write_naming_both(o, [&] { write_soup(soup, o.output, options); });
   std::string line = std::to_string(soup.points.size()) + " vertices, " + std::to_string(soup.triangles.size()) + " triangles";
   if (read.polygons_triangulated > 0) line += " (" + std::to_string(read.polygons_triangulated) + " polygons triangulated)";
@@ -85,7 +94,8 @@ Action add_convert_command(CLI::App& app) {
   cmd->add_option("input", o->input, "Input surface or tet mesh (a TetGen mesh by its .node or .ele)")->required();
   auto* output = cmd->add_option("-o,--output", o->output, "Output mesh of the same kind");
   cmd->add_option("output", o->output, "The output, as the second argument instead of -o")->excludes(output);
-  cmd->add_flag("--binary", o->binary, "Binary PLY/STL/.msh instead of ASCII");
+  add_encoding_options(*cmd, o->encoding,
+                       "Binary PLY, STL or .msh instead of ASCII (.vtu is binary unless --ascii, .xdmf always)");
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for a .msh output")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();

@@ -1,5 +1,5 @@
 // meshprep improve TETS -o OUT [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
-//   [--improve-time-limit S] [--msh-version 4.1|2.2] [--binary] [--target NAME]
+//   [--improve-time-limit S] [--msh-version 4.1|2.2] [--binary | --ascii] [--target NAME]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--threads N] [--json FILE|-]
 // Anyone's tet mesh (Gmsh, VTK, Medit, TetGen files) improved with the boundary kept exactly:
@@ -21,7 +21,7 @@ namespace {
 
 struct ImproveOptions {
   std::string input, output, json, target, msh_version = "4.1";
-  bool binary = false;
+  EncodingFlags encoding;
   ImproveFlags improve;
   ThresholdFlags thresholds;
   std::size_t threads = 0;
@@ -36,7 +36,7 @@ void print_quality(const char* label, const TetQualityReport& q) {
 int run_improve(const ImproveOptions& o) {
   const ThreadLimit parallelism(o.threads);
   ensure_distinct_files({o.input}, {o.output, o.json});
-  const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
+  const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.encoding);
   if (!is_tet_mesh_path(o.input))
     throw InvalidInput(o.input + ": not a tet mesh file (.msh .vtu .vtk .mesh .node .ele .xdmf); for a surface use "
                        "meshprep tetrahedralize");
@@ -90,7 +90,7 @@ Action add_improve_command(CLI::App& app) {
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();
-  cmd->add_flag("--binary", o->binary, "Binary .msh");
+  add_encoding_options(*cmd, o->encoding, "Binary .msh (.vtu is binary unless --ascii, .xdmf always)");
   cmd->add_option("--target", o->target, "Write what a solver reads: mfem, fenicsx, dealii, calculix, code_aster");
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/false);
   add_threshold_options(*cmd, o->thresholds);

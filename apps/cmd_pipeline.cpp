@@ -1,5 +1,5 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
-//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2]
+//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2] [--binary | --ascii]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
@@ -34,6 +34,7 @@ struct PipelineOptions {
   ThresholdFlags thresholds;
   ImproveFlags improve;
   PatchParams patch_edits;  ///< --rename and --merge, after the configuration file's
+  EncodingFlags encoding;
   double ratio = 0, extrude_base = 0;
   std::size_t target_faces = 0, threads = 0;
   unsigned timeout = 0;
@@ -54,6 +55,10 @@ PipelineConfig effective_config(const PipelineOptions& o) {
   if (!o.format.empty()) config.tetrahedralize.format = o.format;
   if (!o.msh_version.empty())
     config.tetrahedralize.export_options.msh_version = o.msh_version == "2.2" ? MshVersion::V22 : MshVersion::V41;
+  if (o.encoding.binary || o.encoding.ascii) {  // either flag overrides both keys of the file
+    config.tetrahedralize.export_options.binary = o.encoding.binary;
+    config.tetrahedralize.export_options.ascii = o.encoding.ascii;
+  }
   config.verdict = o.thresholds.applied_to(config.verdict);
   config.improve.params = o.improve.applied_to(config.improve.params);
   if (o.improve.off) config.improve.enabled = false;
@@ -239,6 +244,7 @@ Action add_pipeline_command(CLI::App& app) {
       ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node", "xdmf"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
+  add_encoding_options(*cmd, o->encoding, "Binary msh (vtu is binary unless --ascii, xdmf always)");
   add_patch_edits(*cmd, o->patch_edits);
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/true);
   add_threshold_options(*cmd, o->thresholds);

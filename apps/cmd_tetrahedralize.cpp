@@ -1,5 +1,5 @@
 // meshprep tetrahedralize SURFACE -o OUT [--radius-edge R] [--min-dihedral DEG]
-//   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary]
+//   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary | --ascii]
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
 //   [--fem-check] [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
@@ -41,7 +41,8 @@ struct TetOptions {
   ImproveFlags improve;
   PatchParams patches;
   double extrude_depth = 0, extrude_relative = 0;
-  bool binary = false, fem_check = false;
+  EncodingFlags encoding;
+  bool fem_check = false;
   unsigned timeout = 0;
   std::size_t threads = 0;
 };
@@ -89,7 +90,7 @@ int run_tetrahedralize(const TetOptions& o) {
   const ThreadLimit parallelism(o.threads);
   ensure_distinct_files({o.input}, {o.output, o.json, o.diagnose});
   check_tet_params(o.params);  // a bound TetGen cannot meet is bad usage, whatever the surface
-  const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.binary);
+  const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.encoding);
   TriangleSoup soup = read_soup(o.input);
   nlohmann::ordered_json json;
   json["input"] = o.input;
@@ -190,7 +191,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();
-  cmd->add_flag("--binary", o->binary, "Binary .msh");
+  add_encoding_options(*cmd, o->encoding, "Binary .msh (.vtu is binary unless --ascii, .xdmf always)");
   cmd->add_option("--target", o->target, "Write what a solver reads: mfem, fenicsx, dealii, calculix, code_aster");
   cmd->add_option("--diagnose", o->diagnose, "If the surface is not FEM-ready, write the offending faces to this mesh file");
   auto* depth = cmd->add_option("--extrude-base", o->extrude_depth,

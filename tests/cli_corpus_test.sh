@@ -128,7 +128,10 @@ run_one() {
   local -a args
   case $cmd in
     quality) out=$dir/report.json; args=(quality "$input" --json "$out") ;;
-    convert) out=$dir/$(converted_name "$name"); args=(convert "$input" "$out" --binary) ;;
+    convert)
+      out=$dir/$(converted_name "$name")
+      args=(convert "$input" "$out")
+      [[ $out == *.ply || $out == *.stl ]] && args+=(--binary) ;;  # OFF and OBJ refuse it
     reconstruct) out=$dir/surface.off; args=(reconstruct "$input" -o "$out" --resolution 20 20 --json "$dir/result.json") ;;
     simplify) out=$dir/surface.off; args=(simplify "$input" -o "$out" --ratio 0.5 --samples 1000 --json "$dir/result.json") ;;
     smooth) out=$dir/surface.off; args=(smooth "$input" -o "$out" --iterations 1 --samples 1000 --json "$dir/result.json") ;;

@@ -174,6 +174,10 @@ for out in formats/c41.msh formats/c22.msh formats/c.vtu formats/c.vtk formats/c
 done
 "$bin" tetrahedralize cube.off -o formats/c41b.msh --max-volume 0.01 --min-dihedral 12 --binary > /dev/null 2> err.txt ||
   bad "write binary msh"
+"$bin" tetrahedralize cube.off -o formats/ca.vtu --max-volume 0.01 --min-dihedral 12 --ascii > /dev/null 2> err.txt ||
+  bad "write ascii vtu"
+grep -q 'compressor="vtkZLibDataCompressor"' formats/c.vtu && grep -q '<AppendedData encoding="raw">' formats/c.vtu &&
+  ! grep -q 'format="appended"' formats/ca.vtu && ok || bad "vtu: binary (appended, zlib) by default, ASCII on --ascii"
 counts=$(python3 -c "
 import json; q = json.load(open('formats.json'))['tet_quality']; print(q['points'], q['tetrahedra'], q['volume'])")
 python=""
@@ -183,6 +187,50 @@ if [ -n "$python" ] && command -v gmsh > /dev/null; then
 else
   echo "note: read-back skipped: no python3 with meshio or no gmsh (scripts/install-deps.sh installs them)"
 fi
+
+# --binary or --ascii that the output's format cannot honour: refused before any work, in one
+# line naming the output and its format (exit 2), nothing written.
+refused_encoding() {  # DESCRIPTION EXPECTED_LINE ARGS...
+  local what=$1 line=$2
+  shift 2
+  rm -rf refused && mkdir refused
+  "$bin" "$@" > /dev/null 2> err.txt
+  expect_exit "$what" 2 $?
+  grep -qx "$line" err.txt && [ "$(wc -l < err.txt)" -eq 1 ] && ok || bad "$what: not the one line '$line'"
+  [ -z "$(ls -A refused)" ] && ok || bad "$what: wrote $(ls refused)"
+}
+text_format="it is a text format (binary: .msh .vtu .xdmf)"
+refused_encoding "tetrahedralize --binary .inp" "meshprep: error: refused/t.inp: cannot write Abaqus/CalculiX (.inp) binary: $text_format" \
+  tetrahedralize cube.off -o refused/t.inp --binary
+refused_encoding "tetrahedralize --ascii .xdmf" \
+  "meshprep: error: refused/t.xdmf: cannot write XDMF + HDF5 (.xdmf) as ASCII: its data is binary (ASCII: .msh .vtu .vtk .mesh .node .inp)" \
+  tetrahedralize cube.off -o refused/t.xdmf --ascii
+refused_encoding "tetrahedralize --binary --target calculix" "meshprep: error: refused/t.inp: --binary: target calculix reads ASCII .inp files" \
+  tetrahedralize cube.off -o refused/t.inp --target calculix --binary
+refused_encoding "improve --binary .mesh" "meshprep: error: refused/t.mesh: cannot write Medit (.mesh) binary: $text_format" \
+  improve formats/c41.msh -o refused/t.mesh --binary
+refused_encoding "convert --binary .node" "meshprep: error: formats/c41.msh -> refused/t.node: cannot write TetGen (.node) binary: $text_format" \
+  convert formats/c41.msh -o refused/t.node --binary
+refused_encoding "convert --binary .vtk" "meshprep: error: formats/c41.msh -> refused/t.vtk: cannot write VTK legacy (.vtk) binary: $text_format" \
+  convert formats/c41.msh -o refused/t.vtk --binary
+refused_encoding "convert --binary .obj" "meshprep: error: refused/t.obj: cannot write OBJ binary: it is a text format (binary: .ply .stl)" \
+  convert cube.off -o refused/t.obj --binary
+refused_encoding "pipeline --format inp --binary" \
+  "meshprep: error: tetrahedralize: binary: tets.inp: cannot write Abaqus/CalculiX (.inp) binary: $text_format" \
+  pipeline cube.off -o refused/run --format inp --binary
+refused_encoding "--binary and --ascii" "meshprep: error: --binary excludes --ascii (see meshprep --help)" \
+  tetrahedralize cube.off -o refused/t.vtu --binary --ascii
+# convert to .vtu: binary unless --ascii (--binary, accepted, asks the same); the mesh is kept.
+"$bin" convert formats/c.vtu -o conv_binary.vtu --binary > /dev/null 2> err.txt; expect_exit "convert vtu --binary" 0 $?
+"$bin" convert formats/c.vtu -o conv_ascii.vtu --ascii > /dev/null 2> err.txt; expect_exit "convert vtu --ascii" 0 $?
+cmp -s formats/c.vtu conv_binary.vtu && cmp -s formats/c_boundary.vtu conv_binary_boundary.vtu && ok ||
+  bad "convert vtu --binary: not the binary file tetrahedralize wrote"
+"$bin" quality conv_ascii.vtu --json qa.json > /dev/null 2> err.txt && "$bin" quality formats/c.vtu --json qb.json > /dev/null 2>&1
+python3 -c "
+import json; a = json.load(open('qa.json')); b = json.load(open('qb.json'))
+assert a['tet_quality'] == b['tet_quality'] and a['boundary'] == b['boundary'], (a, b)
+assert a['input']['format'] == 'vtu ascii + conv_ascii_boundary.vtu', a['input']
+assert b['input']['format'] == 'vtu appended raw zlib + c_boundary.vtu', b['input']" && ok || bad "convert vtu --ascii keeps the mesh"
 
 # A terrain-like open surface closes into a block with --extrude-base. TetGen alone leaves a
 # 6-degree sliver in it, which the improvement removes: FEM-ready.

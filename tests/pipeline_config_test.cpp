@@ -152,6 +152,22 @@ TEST(PipelineConfig, TheLibrariesRangesAreCheckedWithTheFile) {
   EXPECT_NO_THROW(check_config(PipelineConfig()));
 }
 
+// binary and ascii as the tet format can store them: binary inp or ASCII xdmf are refused by the key.
+TEST(PipelineConfig, TheTetFormatMustHonourBinaryOrAscii) {
+  EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"format": "inp", "binary": true}})")),
+            "c.json: tetrahedralize: binary: tets.inp: cannot write Abaqus/CalculiX (.inp) binary: it is a text format "
+            "(binary: .msh .vtu .xdmf)");
+  EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"format": "xdmf", "ascii": true}})")).rfind(
+                "c.json: tetrahedralize: ascii: tets.xdmf: cannot write XDMF + HDF5 (.xdmf) as ASCII", 0),
+            0u);
+  EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"format": "vtu", "binary": true, "ascii": true}})")),
+            "c.json: tetrahedralize: binary, ascii: tets.vtu: cannot be written both binary and ASCII");
+  PipelineConfig config;
+  apply_config(Json::parse(R"({"tetrahedralize": {"format": "vtu", "ascii": true}})"), "c.json", config);
+  EXPECT_TRUE(config.tetrahedralize.export_options.ascii);
+  EXPECT_FALSE(config.tetrahedralize.export_options.binary);
+}
+
 TEST(PipelineConfig, ARefusedValueIsNotApplied) {
   PipelineConfig config;
   EXPECT_THROW(apply_config(Json::parse(R"({"simplify": {"ratio": 2}})"), "c.json", config), InvalidInput);

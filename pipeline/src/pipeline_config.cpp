@@ -315,7 +315,10 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
                                      "the tet mesh file tets.FORMAT: Gmsh, VTK XML, Medit, Abaqus/CalculiX, TetGen, XDMF + HDF5 (dolfinx)"));
   keys.push_back(choice<MshVersion>("tetrahedralize", "msh_version", t.export_options.msh_version,
                                     {{"4.1", MshVersion::V41}, {"2.2", MshVersion::V22}}, "Gmsh format version (msh)"));
-  keys.push_back(flag("tetrahedralize", "binary", t.export_options.binary, "binary .msh"));
+  keys.push_back(flag("tetrahedralize", "binary", t.export_options.binary,
+                      "binary msh (vtu and xdmf are binary anyway; mesh, inp and node cannot be)"));
+  keys.push_back(flag("tetrahedralize", "ascii", t.export_options.ascii,
+                      "ASCII vtu instead of zlib-compressed binary data (the other formats but xdmf are ASCII anyway)"));
   return keys;
 }
 
@@ -402,6 +405,12 @@ void check_config(const PipelineConfig& config) {
   if (!(t.extrude_base_relative > 0 && std::isfinite(t.extrude_base_relative)))
     throw InvalidInput("tetrahedralize: extrude_base_relative must be finite and > 0, not " +
                        std::to_string(t.extrude_base_relative));
+  try {
+    check_tet_export_options("tets." + t.format, t.export_options);
+  } catch (const InvalidInput& e) {  // named by the key (or keys) that asked it
+    const char* keys = !t.export_options.ascii ? "binary" : !t.export_options.binary ? "ascii" : "binary, ascii";
+    throw InvalidInput(std::string("tetrahedralize: ") + keys + ": " + e.what());
+  }
 }
 
 void detail::apply_config_text(std::string_view text, const std::string& origin, PipelineConfig& config) {

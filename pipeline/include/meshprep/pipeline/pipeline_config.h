@@ -147,8 +147,9 @@ void apply_config(const nlohmann::json& json, const std::string& origin, Pipelin
 
 /// Checks, before any work, the settings whose ranges the stage libraries define: TetGen's
 /// (check_tet_params: a radius-edge bound under 1 never ends), the improvement's
-/// (check_improve_params), the verdict's (check_thresholds), and the extrusion depths (positive,
-/// finite). apply_config and run_pipeline call it, so a configuration file and the command line's
+/// (check_improve_params), the verdict's (check_thresholds), the extrusion depths (positive,
+/// finite) and that the tet format can be binary or ASCII as asked (check_tet_export_options:
+/// binary inp is refused). apply_config and run_pipeline call it, so a configuration file and the command line's
 /// flags meet the same checks. The preprocessing stages check theirs when they start.
 /// \throws InvalidInput "<section>: <key> must be ..., not <value>".
 void check_config(const PipelineConfig& config);
