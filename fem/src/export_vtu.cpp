@@ -41,8 +41,9 @@ std::vector<VtuTagName> tag_names(const TagNames& names, const std::vector<int>&
   return named;
 }
 
-// Offsets 0-based ends of each cell's `corners` point ids; the cell type of each.
-void set_cells(VtuPiece& piece, std::vector<std::int64_t> connectivity, std::size_t corners, std::uint8_t type) {
+// The cells of `piece`, each of `corners` point ids in `connectivity` and of VTK cell type `type`;
+// a cell's offset is where its ids end in `connectivity`.
+void set_cells(VtuPiece& piece, const std::vector<std::int64_t>& connectivity, std::size_t corners, std::uint8_t type) {
   std::vector<std::int64_t> offsets(piece.num_cells);
   for (std::size_t c = 0; c < piece.num_cells; ++c) offsets[c] = static_cast<std::int64_t>(corners * (c + 1));
   piece.connectivity = vtu_array("connectivity", connectivity, 1, corners);
@@ -65,7 +66,7 @@ VtuPiece tets_piece(const TetMesh& mesh) {
   std::vector<std::int64_t> connectivity;
   connectivity.reserve(4 * mesh.tets.size());
   for (const Tetrahedron& t : mesh.tets) connectivity.insert(connectivity.end(), t.begin(), t.end());
-  set_cells(piece, std::move(connectivity), 4, kVtkTetra);
+  set_cells(piece, connectivity, 4, kVtkTetra);
   piece.cell_scalars = "region";
   piece.cell_data.push_back(vtu_array("region", std::vector<std::int32_t>(mesh.tet_regions.begin(), mesh.tet_regions.end())));
   const std::vector<TetShape> shapes = tet_shapes(mesh);
@@ -97,7 +98,7 @@ VtuPiece boundary_piece(const TetMesh& mesh) {
   piece.num_cells = mesh.boundary_faces.size();
   piece.point_data.push_back(vtu_array("mesh_point_id", mesh_point_id));
   piece.points = points_array(points);
-  set_cells(piece, std::move(connectivity), 3, kVtkTriangle);
+  set_cells(piece, connectivity, 3, kVtkTriangle);
   piece.cell_scalars = "patch";
   piece.cell_data.push_back(vtu_array("patch", std::vector<std::int32_t>(mesh.boundary_tags.begin(), mesh.boundary_tags.end())));
   piece.tag_names = tag_names(mesh.boundary_names, mesh.boundary_tags, "boundary", 2);
