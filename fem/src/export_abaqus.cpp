@@ -1,14 +1,20 @@
-// Abaqus / CalculiX input deck .inp with linear tetrahedra (C3D4), 1-based node and element ids
-// (tet t is element t + 1):
-//   *NODE; one *ELEMENT, TYPE=C3D4, ELSET=REGION_<r> block per region;
-//   per boundary tag: *NSET, NSET=BOUNDARY_<t> (the nodes of its faces) and an element-face
-//   surface *SURFACE, NAME=SURF_<t>, TYPE=ELEMENT with "element, S<k>" lines.
+// Abaqus / CalculiX input deck .inp with linear tetrahedra (C3D4) or second-order ones (C3D10),
+// 1-based node and element ids (tet t is element t + 1):
+//   *NODE; one *ELEMENT, TYPE=C3D4 (or C3D10), ELSET=REGION_<r> block per region;
+//   per boundary tag: *NSET, NSET=BOUNDARY_<t> (the nodes of its faces, mid-edge nodes included)
+//   and an element-face surface *SURFACE, NAME=SURF_<t>, TYPE=ELEMENT with "element, S<k>" lines.
 // Data lines hold at most 16 entries (the Abaqus limit for set definitions).
 //
 // Orientation: C3D4 nodes 1-2-3 are counter-clockwise seen from node 4, i.e. positive volume in
 // TetMesh's sense, so tets are written in their own order. Faces (Abaqus Analysis User's Guide,
 // "Three-dimensional solid element library"; CalculiX manual, C3D4): S1 = 1-2-3, S2 = 1-4-2,
 // S3 = 2-4-3, S4 = 3-4-1, each listed with its normal pointing into the element.
+//
+// C3D10: corners 1-4 as C3D4's, then nodes 5-10 on edges 1-2, 2-3, 3-1, 1-4, 2-4, 3-4 (Abaqus
+// Analysis User's Guide, "Three-dimensional solid element library", node ordering figure;
+// CalculiX CrunchiX manual, "Ten-node tetrahedral element (C3D10)"): kTetEdges' order, checked
+// on what `gmsh -3 -order 2` writes to .inp. Its faces are numbered as C3D4's, so the surfaces
+// are written alike.
 #include "exporters.h"
 
 #include "meshprep/core/atomic_file.h"
@@ -86,22 +92,31 @@ void write_nodes(std::ostream& out, const TetMesh& mesh) {
   }
 }
 
+const char* element_type(const TetMesh& mesh) { return mesh.quadratic() ? "C3D10" : "C3D4"; }
+
+// One line per element: 11 entries at most for C3D10, within the 16 of a data line.
 void write_elements(std::ostream& out, const TetMesh& mesh) {
   for (const auto& [region, tets] : group_by_tag(mesh.tet_regions)) {
-    out << "*ELEMENT, TYPE=C3D4, ELSET=REGION_" << region << '\n';
+    out << "*ELEMENT, TYPE=" << element_type(mesh) << ", ELSET=REGION_" << region << '\n';
     for (std::size_t t : tets) {
       out << t + 1;
       for (std::uint32_t v : mesh.tets[t]) out << ", " << v + std::size_t{1};
+      if (mesh.quadratic())
+        for (std::uint32_t v : mesh.tet_edge_nodes[t]) out << ", " << v + std::size_t{1};
       out << '\n';
     }
   }
 }
 
 void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<FaceOwner>& owners) {
+  const std::vector<std::array<std::uint32_t, 3>> face_nodes = boundary_face_edge_nodes(mesh);
   for (const auto& [tag, faces] : group_by_tag(mesh.boundary_tags)) {
     std::vector<std::size_t> nodes;
-    for (std::size_t f : faces)
+    for (std::size_t f : faces) {
       for (std::uint32_t v : mesh.boundary_faces[f]) nodes.push_back(v + std::size_t{1});
+      if (mesh.quadratic())
+        for (std::uint32_t v : face_nodes[f]) nodes.push_back(v + std::size_t{1});
+    }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     out << "*NSET, NSET=BOUNDARY_" << tag << '\n';
@@ -117,7 +132,7 @@ void write_abaqus(const TetMesh& mesh, const std::string& path) {
   const std::vector<FaceOwner> owners = face_owners(mesh, path);
   write_file_atomically(path, [&](std::ostream& out) {
     out << "*HEADING\n"
-        << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << " C3D4 elements\n";
+        << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << ' ' << element_type(mesh) << " elements\n";
     write_nodes(out, mesh);
     write_elements(out, mesh);
     write_boundaries(out, mesh, owners);

@@ -1,6 +1,8 @@
 // VTK unstructured grids: XML .vtu (ASCII data arrays) and legacy .vtk (ASCII, version 3.0), per
 // "VTK File Formats" (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html).
-// Tets only, as VTK_TETRA (cell type 10), with the region as Int32 cell data "region" and each
+// Tets only, as VTK_TETRA (cell type 10), or VTK_QUADRATIC_TETRA (24) for a second-order mesh
+// (its ten points: the corners, then the nodes of edges (0,1) (1,2) (2,0) (0,3) (1,3) (2,3), per
+// vtkQuadraticTetra's documentation: kTetEdges' order), with the region as Int32 cell data "region" and each
 // tet's quality (tet_quality.h) as Float64 cell data: min_dihedral_deg, max_dihedral_deg,
 // radius_edge_ratio, scaled_jacobian, for ParaView's colour maps and thresholds.
 //
@@ -20,6 +22,7 @@ namespace meshprep::detail {
 namespace {
 
 constexpr int vtk_tetra = 10;
+constexpr int vtk_quadratic_tetra = 24;
 
 // VTK's ASCII readers parse numbers with operator>>, which does not read "inf": a flat tet's
 // radius-edge ratio (+inf) is written as Verdict's VERDICT_DBL_MAX, 1e30, which it also uses for
@@ -53,17 +56,32 @@ void write_vtu_points(std::ostream& out, const TetMesh& mesh) {
       << "      </Points>\n";
 }
 
+// A tet's point ids as VTK lists them: its corners, then a second-order tet's mid-edge nodes in
+// VTK_QUADRATIC_TETRA's order, kTetEdges'.
+void write_cell_points(std::ostream& out, const TetMesh& mesh, std::size_t t) {
+  const Tetrahedron& c = mesh.tets[t];
+  out << c[0] << ' ' << c[1] << ' ' << c[2] << ' ' << c[3];
+  if (mesh.quadratic())
+    for (const std::uint32_t v : mesh.tet_edge_nodes[t]) out << ' ' << v;
+}
+
+std::size_t nodes_per_cell(const TetMesh& mesh) { return mesh.quadratic() ? 10 : 4; }
+int cell_type(const TetMesh& mesh) { return mesh.quadratic() ? vtk_quadratic_tetra : vtk_tetra; }
+
 void write_vtu_cells(std::ostream& out, const TetMesh& mesh) {
   out << "      <Cells>\n"
       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const Tetrahedron& t : mesh.tets)
-    out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    out << "          ";
+    write_cell_points(out, mesh, t);
+    out << '\n';
+  }
   out << "        </DataArray>\n"
       << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t t = 1; t <= mesh.tets.size(); ++t) out << "          " << 4 * t << '\n';
+  for (std::size_t t = 1; t <= mesh.tets.size(); ++t) out << "          " << nodes_per_cell(mesh) * t << '\n';
   out << "        </DataArray>\n"
       << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) out << "          " << vtk_tetra << '\n';
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) out << "          " << cell_type(mesh) << '\n';
   out << "        </DataArray>\n"
       << "      </Cells>\n";
 }
@@ -100,7 +118,9 @@ void write_vtu_stream(std::ostream& out, const TetMesh& mesh) {
       << "</VTKFile>\n";
 }
 
-// Legacy format: CELLS lists "4 a b c d" per tet, so its size is 5 T; 0-based point ids.
+// Legacy format: CELLS lists "4 a b c d" per tet, so its size is 5 T; 0-based point ids ("10 a b
+// c d" and six mid-edge nodes for a second-order tet, 11 T). The quality arrays are those of the
+// corner tets, in both formats.
 void write_vtk_legacy_stream(std::ostream& out, const TetMesh& mesh) {
   out << "# vtk DataFile Version 3.0\n"
       << "meshprep tetrahedral mesh\n"
@@ -111,10 +131,14 @@ void write_vtk_legacy_stream(std::ostream& out, const TetMesh& mesh) {
     write_point(out, p);
     out << '\n';
   }
-  out << "CELLS " << mesh.tets.size() << ' ' << 5 * mesh.tets.size() << '\n';
-  for (const Tetrahedron& t : mesh.tets) out << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  out << "CELLS " << mesh.tets.size() << ' ' << (nodes_per_cell(mesh) + 1) * mesh.tets.size() << '\n';
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    out << nodes_per_cell(mesh) << ' ';
+    write_cell_points(out, mesh, t);
+    out << '\n';
+  }
   out << "CELL_TYPES " << mesh.tets.size() << '\n';
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) out << vtk_tetra << '\n';
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) out << cell_type(mesh) << '\n';
   out << "CELL_DATA " << mesh.tets.size() << '\n'
       << "SCALARS region int 1\n"
       << "LOOKUP_TABLE default\n";
