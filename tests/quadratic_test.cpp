@@ -230,7 +230,7 @@ TEST(Quadratic, SphereBoundaryMovesOntoTheReferenceAndCloserToTheSphere) {
   const QuadraticResult r = make_quadratic(mesh, &reference);
   EXPECT_EQ(r.boundary_edges, 480u);  // icosphere(2): 320 faces, 480 edges
   EXPECT_GT(r.curved_edges, 470u);
-  EXPECT_EQ(r.curved_edges + r.straight_inverting + r.straight_off_reference, r.boundary_edges);
+  EXPECT_EQ(r.curved_edges + r.on_reference + r.straight_inverting + r.straight_off_reference, r.boundary_edges);
   EXPECT_EQ(r.nonpositive_jacobian_tets, 0u);
   EXPECT_GT(r.min_scaled_jacobian, 0.0);
   const double quadratic_error = max_sphere_distance(quadratic_boundary(mesh, 8), 1.0);

@@ -93,6 +93,7 @@ bool tets_valid(const TetMesh& mesh, const Edges& edges, std::size_t edge) {
 struct Placement {
   Vec3 point = Vec3::Zero();
   double distance = 0;
+  bool on_reference = false;  ///< the midpoint is on the reference already (kOnReference)
 };
 
 std::vector<Placement> reference_points(const TetMesh& mesh, const Edges& edges, const std::vector<std::size_t>& boundary,
@@ -106,14 +107,16 @@ std::vector<Placement> reference_points(const TetMesh& mesh, const Edges& edges,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boundary.size(), 256), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const std::uint64_t key = edges.keys[boundary[i]];
-      const Vec3 mid = 0.5 * (mesh.points[key >> 32] + mesh.points[key & 0xffffffffu]);
+      const Vec3 a = mesh.points[key >> 32], b = mesh.points[key & 0xffffffffu];
+      const Vec3 mid = 0.5 * (a + b);
       const TriangleBvh::Hit hit = to_reference.closest_point(mid);
       Placement& p = placements[i];
       p.point = hit.point;
       p.distance = std::sqrt(hit.squared_distance);
+      p.on_reference = p.distance <= kOnReference * (b - a).norm();
       // The boundary must not pass nearer the reference point than kMutualClosest x the move.
       const double limit = kMutualClosest * p.distance;
-      if (p.distance > 0 && to_own.reaches_within(hit.point, limit * limit * (1 - 1e-12)))
+      if (!p.on_reference && to_own.reaches_within(hit.point, limit * limit * (1 - 1e-12)))
         p.distance = std::numeric_limits<double>::quiet_NaN();
     }
   });
@@ -158,6 +161,10 @@ QuadraticResult make_quadratic(TetMesh& mesh, const TriangleSoup* reference) {
     for (std::size_t i = 0; i < boundary.size(); ++i) {
       const std::size_t edge = boundary[i];
       const Placement& p = placements[i];
+      if (p.on_reference) {
+        ++result.on_reference;
+        continue;
+      }
       if (std::isnan(p.distance)) {
         ++result.straight_off_reference;
         continue;
@@ -230,6 +237,7 @@ nlohmann::ordered_json to_json(const QuadraticResult& r) {
   return {{"edges", r.edges},
           {"boundary_edges", r.boundary_edges},
           {"curved_edges", r.curved_edges},
+          {"on_reference", r.on_reference},
           {"straight_inverting", r.straight_inverting},
           {"straight_off_reference", r.straight_off_reference},
           {"max_offset_relative", r.max_offset_relative},

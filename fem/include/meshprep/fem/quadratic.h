@@ -33,10 +33,24 @@ inline constexpr double kMinJacobianRatio = 0.1;
 /// thin part).
 inline constexpr double kMutualClosest = 0.5;
 
+/// The element order of the tets a command writes: 1 linear (4-node tets), 2 second-order
+/// (10-node tets, make_quadratic after any improvement, which moves linear tets only).
+struct ElementOrderParams {
+  std::size_t order = 1;
+};
+
+/// A midpoint this near the reference, relative to its edge's length, is on it: round-off of a
+/// linear boundary that lies in the reference's own facets (TetGen's splits of the input's
+/// triangles), where the mutual-closest test would compare distances that are noise.
+inline constexpr double kOnReference = 1e-9;
+
 struct QuadraticResult {
   std::size_t edges = 0;           ///< mid-edge nodes made: the mesh's edges
   std::size_t boundary_edges = 0;  ///< edges of boundary faces (faces of one tet)
   std::size_t curved_edges = 0;    ///< boundary edges whose node was placed on the reference
+  /// Boundary edges whose midpoint is on the reference already (within kOnReference of the edge's
+  /// length): left as they are, neither curved nor counted as kept straight.
+  std::size_t on_reference = 0;
   std::size_t straight_inverting = 0;      ///< kept straight: curving took det J under the bound
   std::size_t straight_off_reference = 0;  ///< kept straight: the nearest reference point belongs to another part
   /// The largest distance of a placed node from its edge's midpoint, over the edge's length.
