@@ -3,6 +3,7 @@
 
 #include "meshprep/fem/tet_boundary.h"
 #include "meshprep/fem/tet_quality.h"
+#include "meshprep/core/patch_names.h"
 #include "meshprep/quality/topology.h"
 #include "meshprep/report/number_format.h"
 
@@ -26,11 +27,15 @@ Json boundary_json(const TetMesh& mesh, const TetReadReport& read) {
   const Topology topology = analyze_topology(boundary);
   std::map<int, std::size_t> per_tag;
   for (const int tag : mesh.boundary_tags) ++per_tag[tag];
-  Json tags = Json::object();
-  for (const auto& [tag, count] : per_tag) tags[std::to_string(tag)] = count;
+  Json tags = Json::object(), patches = Json::object();
+  for (const auto& [tag, count] : per_tag) {
+    tags[std::to_string(tag)] = count;
+    patches[tag_name(mesh.boundary_names, tag, "boundary")] = count;
+  }
   return {{"faces", boundary.triangles.size()},
           {"interface_faces", read.interface_faces},
           {"faces_per_tag", tags},
+          {"faces_per_patch", patches},
           {"closed", topology.closed},
           {"manifold", topology.manifold},
           {"oriented", topology.oriented},

@@ -269,12 +269,12 @@ done
 same_figures enhance 1e-12 runs/sphere.off.enhance/result.json runs/offset_1e9.off.enhance/result.json
 same_figures reconstruct 1e-9 runs/points.xyz.reconstruct/result.json runs/points_offset_1e9.xyz.reconstruct/result.json
 same_figures pipeline 1e-5 runs/sphere.off.pipeline/out/report.json runs/offset_1e9.off.pipeline/out/report.json \
-  tetrahedralize,improve,tets,thresholds
+  tetrahedralize,improve,tets,thresholds,tet_boundary_faces
 # Its reconstruction at 1e9 differs by up to 6e-8 (the rounding there); the simplifier's placements
 # (quadric minimisers, eigenvalues down to 1e-3 of the largest kept) make that up to 1.4e-6 (measured,
 # the same before and after the dQ cost), 2e-5 of its edges (~0.07): the ratios' tolerance is 1e-4.
 same_figures "pipeline of points" 1e-4 runs/points.xyz.pipeline/out/report.json \
-  runs/points_offset_1e9.xyz.pipeline/out/report.json tetrahedralize,improve,tets,thresholds,problems
+  runs/points_offset_1e9.xyz.pipeline/out/report.json tetrahedralize,improve,tets,thresholds,problems,tet_boundary_faces
 # A size bound relative to the enclosed volume holds at 1e9 too. TetGen alone leaves a 6.5-degree
 # sliver in these tets, which the improvement removes: FEM-ready at 0 and at 1e9.
 for f in sphere offset_1e9; do

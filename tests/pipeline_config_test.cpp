@@ -121,7 +121,7 @@ TEST(PipelineConfig, ValuesOfTheWrongTypeOrRangeAreRefusedWithTheKey) {
   EXPECT_EQ(error_of(Json::parse(R"({"smooth": {"iterations": -1}})")),
             "c.json: smooth.iterations: expected an integer in [1, 1000], not -1");
   EXPECT_EQ(error_of(Json::parse(R"({"tetrahedralize": {"format": "stl"}})")),
-            "c.json: tetrahedralize.format: expected one of msh, vtu, mesh, inp, node, not \"stl\"");
+            "c.json: tetrahedralize.format: expected one of msh, vtu, mesh, inp, node, xdmf, not \"stl\"");
   EXPECT_NE(error_of(Json::parse(R"({"enhance": {"max_deviation": 0}})")).find("number in (0, 1]"), std::string::npos);
   EXPECT_EQ(error_of(Json::parse(R"({"verdict": {"min_dihedral_deg": 200}})")),
             "c.json: verdict.min_dihedral_deg: expected a number in [0, 180], not 200");

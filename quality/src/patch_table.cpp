@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace meshprep {
@@ -23,12 +24,21 @@ std::vector<PatchRow> patch_table(const TriangleSoup& surface) {
     row.area += 0.5 * normals[f].norm();
     area_normal.try_emplace(surface.patches[f], Vec3::Zero()).first->second += normals[f];
   }
+  // A closed patch (a whole sphere) has area vectors that sum to nothing: its mean normal is
+  // rounding noise with no direction, and its normals point every way. Below sqrt(epsilon) of the
+  // summed area, far above the rounding of the sum and far below any open patch, it counts as 180°.
+  const double closed_fraction = std::sqrt(std::numeric_limits<double>::epsilon());
   std::map<int, double> smallest_cosine;
   for (std::size_t f = 0; f < surface.patches.size(); ++f) {
-    const Vec3& mean = area_normal[surface.patches[f]];
+    const int tag = surface.patches[f];
+    const Vec3& mean = area_normal[tag];
+    double& cosine = smallest_cosine.try_emplace(tag, 1.0).first->second;
+    if (mean.norm() <= closed_fraction * 2 * rows[tag].area) {
+      cosine = -1;
+      continue;
+    }
     const double norms = normals[f].norm() * mean.norm();
     if (norms == 0) continue;
-    double& cosine = smallest_cosine.try_emplace(surface.patches[f], 1.0).first->second;
     cosine = std::min(cosine, normals[f].dot(mean) / norms);
   }
   std::vector<PatchRow> table;

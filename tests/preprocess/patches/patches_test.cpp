@@ -79,6 +79,19 @@ TEST(Patches, ABoxHasSixACylinderThreeAndASmoothSurfaceOne) {
   EXPECT_EQ(patch_count(test::torus(32, 16)), 1u);
 }
 
+// A closed patch's normals point every way, wherever it lies: its area vectors sum to rounding
+// noise, which has no direction to measure a spread from.
+TEST(Patches, AClosedPatchSpreadsHalfATurnAtTheOriginAndFarFromIt) {
+  for (const double offset : {0.0, 1e9}) {
+    TriangleSoup sphere = test::icosphere(3);
+    for (Vec3& p : sphere.points) p += Vec3(offset, -offset, offset);
+    find_patches(sphere, {});
+    const std::vector<PatchRow> table = patch_table(sphere);
+    ASSERT_EQ(table.size(), 1u);
+    EXPECT_EQ(table[0].normal_spread_deg, 180.0) << "offset " << offset;
+  }
+}
+
 TEST(Patches, AreNamedByDecreasingAreaAndTheirAreasSumToTheSurfaces) {
   TriangleSoup cylinder = test::cylinder_with_fan_caps(24);
   for (Vec3& p : cylinder.points) p.z() *= 5;  // the side is now the largest patch
