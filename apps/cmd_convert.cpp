@@ -1,24 +1,31 @@
-// meshprep convert IN -o OUT [--binary | --ascii] [--msh-version 4.1|2.2] [--json FILE|-]: between the
-// surface formats, or between the tet mesh formats, without changing the mesh. (OUT may also come
-// second, as before -o was added.)
+// meshprep convert IN -o OUT [--binary | --ascii] [--msh-version 4.1|2.2] [--order 1|2 [--reference
+// SURFACE]] [--json FILE|-]: between the surface formats, or between the tet mesh formats, without
+// changing the mesh but for its order when --order asks for another (2: make_quadratic; 1: the
+// corner tets); or from a tet mesh to a surface format: its boundary surface, with its patches.
+// (OUT may also come second, as before -o was added.)
 #include "cli_common.h"
+#include "cli_parameters.h"
 #include "tet_report.h"
+#include "tet_second_order.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
+#include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/import.h"
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace meshprep::cli {
 namespace {
 
 struct ConvertOptions {
-  std::string input, output, json, msh_version = "4.1";
+  std::string input, output, json, reference, msh_version = "4.1";
   EncodingFlags encoding;
+  std::optional<std::size_t> order;  ///< unset: the input's
 };
 
 // The line on stdout (unless the JSON goes there) and the JSON file.
@@ -42,20 +49,40 @@ void write_naming_both(const ConvertOptions& o, Write write) {
   }
 }
 
+// The mesh in the order asked: a linear one made second-order onto the reference (the tets' own
+// boundary without one), a second-order one reduced to its corner tets.
+std::optional<QuadraticResult> change_order(const ConvertOptions& o, TetMesh& mesh, nlohmann::ordered_json& counts) {
+  const std::size_t order = mesh.quadratic() ? 2 : 1;
+  if (!o.order || *o.order == order) return std::nullopt;
+  if (*o.order == 1) {
+    mesh = linear_mesh(mesh);
+    return std::nullopt;
+  }
+  const std::optional<TriangleSoup> reference = o.reference.empty() ? std::nullopt : std::optional(read_soup(o.reference));
+  return make_second_order(mesh, reference ? &*reference : nullptr, counts);
+}
+
 int convert_tet_mesh(const ConvertOptions& o) {
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
   TetExportOptions options;  // checked before the input is read: binary .inp is bad usage, whatever the input
   write_naming_both(o, [&] { options = tet_export_options(o.output, "", o.msh_version, o.encoding); });
   TetReadReport read;
-  const TetMesh mesh = read_tet_mesh(o.input, &read);
+  TetMesh mesh = read_tet_mesh(o.input, &read);
   note_read_changes(read);
+  nlohmann::ordered_json counts = {{"kind", "tets"}};
+  const std::optional<QuadraticResult> second_order = change_order(o, mesh, counts);
   TetExportReport written;
   write_naming_both(o, [&] { write_tet_mesh(mesh, o.output, options, &written); });
   note_export_rounding(o.output, written);
-  report(o, {{"kind", "tets"}, {"points", mesh.points.size()}, {"tets", mesh.tets.size()},
-             {"boundary_faces", mesh.boundary_faces.size()}},
-         std::to_string(mesh.points.size()) + " points, " + std::to_string(mesh.tets.size()) + " tets, " +
-             std::to_string(mesh.boundary_faces.size()) + " boundary faces");
+  counts["order"] = mesh.quadratic() ? 2 : 1;
+  counts["points"] = mesh.points.size();
+  counts["tets"] = mesh.tets.size();
+  counts["boundary_faces"] = mesh.boundary_faces.size();
+  std::string line = std::to_string(mesh.points.size()) + " points, " + std::to_string(mesh.tets.size()) +
+                     (mesh.quadratic() ? " 10-node" : "") + " tets, " + std::to_string(mesh.boundary_faces.size()) +
+                     " boundary faces";
+  if (second_order) line += "\n  second order: " + second_order_summary(*second_order);
+  report(o, counts, line);
   return kSuccess;
 }
 
@@ -99,9 +126,14 @@ Action add_convert_command(CLI::App& app) {
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for a .msh output")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();
+  const ParameterInfo& order = element_order_parameters().order;
+  CLI::Option* order_option = cmd->add_option(order.flag, o->order, capitalised(order.help) + " (default: the input's)")
+                                  ->check(range_check(order.range));
+  add_reference_option(*cmd, o->reference)->needs(order_option);
   cmd->add_option("--json", o->json, "Write what was converted (counts) as JSON (- for standard output)");
   return [o] {
     if (o->output.empty()) throw InvalidInput("convert: give the output file with -o OUT");
+    if (o->order && !is_tet_mesh_path(o->input)) throw InvalidInput("convert: --order applies to tet meshes, not to " + o->input);
     return is_tet_mesh_path(o->input) ? convert_tet_mesh(*o) : convert_surface(*o);
   };
 }

@@ -1,28 +1,33 @@
 // meshprep improve TETS -o OUT [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--msh-version 4.1|2.2] [--binary | --ascii] [--target NAME]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
-//   [--threads N] [--json FILE|-]
+//   [--threads N] [--order 1|2 [--reference SURFACE]] [--json FILE|-]
 // Anyone's tet mesh (Gmsh, VTK, Medit, TetGen files) improved with the boundary kept exactly:
-// the quality before and after, the verdict, the same formats out as tetrahedralize writes.
+// the quality before and after, the verdict, the same formats out as tetrahedralize writes. The
+// improvement moves linear tets: --order 2 makes them second-order afterwards.
 #include "cli_common.h"
 #include "interrupt.h"
 #include "tet_improvement.h"
+#include "tet_second_order.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/import.h"
 #include "meshprep/fem/tet_quality.h"
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace meshprep::cli {
 namespace {
 
 struct ImproveOptions {
-  std::string input, output, json, target, msh_version = "4.1";
+  std::string input, output, json, target, reference, msh_version = "4.1";
   EncodingFlags encoding;
   ImproveFlags improve;
+  ElementOrderParams element_order;
   ThresholdFlags thresholds;
   std::size_t threads = 0;
 };
@@ -35,7 +40,7 @@ void print_quality(const char* label, const TetQualityReport& q) {
 
 int run_improve(const ImproveOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.encoding);
   if (!is_tet_mesh_path(o.input))
     throw InvalidInput(o.input + ": not a tet mesh file (.msh .vtu .vtk .mesh .node .ele .xdmf); for a surface use "
@@ -46,6 +51,7 @@ int run_improve(const ImproveOptions& o) {
   json["input"] = o.input;
   json["format"] = read.format;
   json["output"] = o.output;
+  json["order"] = o.element_order.order;
   const TetQualityReport before = analyze_tet_quality(tets);
   json["tet_quality_before"] = to_json(before);
   ImproveResult improvement;
@@ -55,6 +61,11 @@ int run_improve(const ImproveOptions& o) {
     throw InvalidInput(o.input + ": " + e.what());  // tets that overlap, a face of three tets
   } catch (const Cancelled&) {
     throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
+  }
+  std::optional<QuadraticResult> second_order;
+  if (o.element_order.order == 2) {
+    const std::optional<TriangleSoup> reference = o.reference.empty() ? std::nullopt : std::optional(read_soup(o.reference));
+    second_order = make_second_order(tets, reference ? &*reference : nullptr, json);
   }
   const TetQualityReport after = analyze_tet_quality(tets);
   const TetVerdict verdict = judge_tets(after, o.thresholds.applied_to({}));
@@ -70,6 +81,7 @@ int run_improve(const ImproveOptions& o) {
     print_quality("before", before);
     print_quality("after ", after);
     std::cout << "  improved: " << improvement_summary(improvement) << '\n';
+    if (second_order) std::cout << "  second order: " << second_order_summary(*second_order) << '\n';
     if (verdict.ok()) std::cout << "  FEM-ready: every threshold holds\n";
   }
   if (verdict.ok()) return kSuccess;
@@ -94,6 +106,8 @@ Action add_improve_command(CLI::App& app) {
   cmd->add_option("--target", o->target, "Write what a solver reads: mfem, fenicsx, dealii, calculix, code_aster");
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/false);
   add_threshold_options(*cmd, o->thresholds);
+  CLI::Option* order = add_order_option(*cmd, o->element_order);
+  add_reference_option(*cmd, o->reference)->needs(order);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the quality before and after, and the verdict, as JSON to FILE ('-' = stdout)");
   return [o] { return run_improve(*o); };

@@ -3,11 +3,12 @@
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
 //   [--fem-check] [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
-//   [--timeout SECONDS] [--threads N] [--json FILE|-]
+//   [--timeout SECONDS] [--threads N] [--order 1|2] [--json FILE|-]
 #include "cli_common.h"
 #include "cli_parameters.h"
 #include "interrupt.h"
 #include "tet_improvement.h"
+#include "tet_second_order.h"
 
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
@@ -40,6 +41,7 @@ struct TetOptions {
   ThresholdFlags thresholds;
   ImproveFlags improve;
   PatchParams patches;
+  ElementOrderParams element_order;
   double extrude_depth = 0, extrude_relative = 0;
   EncodingFlags encoding;
   bool fem_check = false;
@@ -95,6 +97,7 @@ int run_tetrahedralize(const TetOptions& o) {
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
+  json["order"] = o.element_order.order;
   // The boundary patches, as the pipeline finds them, become the tets' named boundary tags. A
   // surface the halfedge mesh cannot hold has none: the readiness check below says why.
   MeshBuildReport build;
@@ -141,15 +144,17 @@ int run_tetrahedralize(const TetOptions& o) {
       throw stopped();
     }
   }
+  if (o.fem_check) {  // on the linear tets: the check's solve is P1
+    progress("FEM check: P1 Poisson solve on " + std::to_string(tets.tets.size()) + " tets ...");
+    json["fem_check"] = to_json(run_fem_check(tets));
+  }
+  std::optional<QuadraticResult> second_order;
+  if (o.element_order.order == 2) second_order = make_second_order(tets, &soup, json);
   const TetQualityReport quality = analyze_tet_quality(tets);
   const TetVerdict verdict = judge_tets(quality, o.thresholds.applied_to({}));
   json["tet_quality"] = to_json(quality);
   json["fem_ready"] = verdict.ok();
   json["thresholds"] = to_json(verdict);
-  if (o.fem_check) {
-    progress("FEM check: P1 Poisson solve on " + std::to_string(tets.tets.size()) + " tets ...");
-    json["fem_check"] = to_json(run_fem_check(tets));
-  }
   TetExportReport written;
   write_tet_mesh(tets, o.output, options, &written);
   note_export_rounding(o.output, written);
@@ -160,6 +165,7 @@ int run_tetrahedralize(const TetOptions& o) {
               << " deg, tets under 10 deg " << 100 * quality.tets_min_dihedral_below_10 << " %, radius-edge max "
               << quality.radius_edge_ratio.max << ", scaled Jacobian min " << quality.scaled_jacobian.min << '\n';
     if (improvement) std::cout << "  improved: " << improvement_summary(*improvement) << '\n';
+    if (second_order) std::cout << "  second order: " << second_order_summary(*second_order) << '\n';
     if (verdict.ok()) std::cout << "  FEM-ready: every threshold holds\n";
     if (o.fem_check) {
       const auto& f = json["fem_check"];
@@ -208,6 +214,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
       ->check(CLI::Range(1u, 1000000u));
   add_auto_parameter(*cmd, patch_parameters().feature_angle_deg, o->patches.feature_angle_deg);
   add_patch_edits(*cmd, o->patches);
+  add_order_option(*cmd, o->element_order);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results as JSON to FILE ('-' = stdout)");
   return [o] { return run_tetrahedralize(*o); };

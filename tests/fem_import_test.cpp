@@ -636,7 +636,7 @@ TEST_F(FemImportTest, MalformedInlineXdmfIsRefused) {
   refused("  </Domain>\n", "", "line 22: </Xdmf> found where <Domain> (line 3) is open");
   refused("</Xdmf>", "", "<Xdmf> is not closed");
   refused("<Domain>", "<Domain", "malformed XML tag");
-  refused("TopologyType=\"Tetrahedron\"", "TopologyType=\"Hexahedron\"", "TopologyType 'Hexahedron': meshprep reads linear tetrahedra only");
+  refused("TopologyType=\"Tetrahedron\"", "TopologyType=\"Hexahedron\"", "TopologyType 'Hexahedron': meshprep reads Tetrahedron and Tetrahedron_10 only");
   refused("TopologyType=\"Tetrahedron\"", "TopologyType=\"Mixed\"", "TopologyType 'Mixed'");
   refused("NodesPerElement=\"4\"", "NodesPerElement=\"10\"", "not NodesPerElement='10'");
   refused("Format=\"XML\">0 1 2 3", "Format=\"Binary\">0 1 2 3", "DataItem Format 'Binary' is not read");
@@ -964,8 +964,9 @@ TEST_F(FemImportTest, MalformedMshIsRefused) {
                       "line 7: node number: '$EndNodes' is not an integer");
   expect_refused_text("nan.msh", header + "$Nodes\n4\n1 0 0 0\n2 1 nan 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
                       "$Elements\n1\n1 4 2 0 1 1 2 3 4\n$EndElements\n", "point #2 has a non-finite coordinate (nan)");
+  // A 10-node tet whose mid-edge nodes are its corners.
   expect_refused_text("tet10.msh", header + nodes + "$Elements\n1\n1 11 0 1 2 3 4 1 2 3 4 1 2\n$EndElements\n",
-                      "10-node tetrahedron (type 11)");
+                      "point #1 is a corner and the mid-edge node of tetrahedron #1");
   expect_refused_text("prism.msh", header + nodes + "$Elements\n1\n1 6 0 1 2 3 4 1 2\n$EndElements\n", "6-node prism");
   expect_refused_text("surface.msh", header + nodes + "$Elements\n1\n1 2 0 1 2 3\n$EndElements\n",
                       "no tetrahedra (1 triangles: a surface?");
@@ -999,7 +1000,7 @@ TEST_F(FemImportTest, MalformedMeditIsRefused) {
   expect_refused_text("huge.mesh", vertices + "Tetrahedra\n4000000000\n1 2 3 4 1\nEnd\n", "is not an integer");
   expect_refused_text("nan.mesh", "MeshVersionFormatted 2\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 nan 0 0\n0 0 1 0\n"
                       "Tetrahedra\n1\n1 2 3 4 1\nEnd\n", "non-finite");
-  expect_refused_text("hex.mesh", vertices + "Hexahedra\n1\n1 2 3 4 1 2 3 4 1\nEnd\n", "linear tetrahedra only");
+  expect_refused_text("hex.mesh", vertices + "Hexahedra\n1\n1 2 3 4 1 2 3 4 1\nEnd\n", "reads Tetrahedra and TetrahedraP2 only");
   expect_refused_text("2d.mesh", "MeshVersionFormatted 2\nDimension 2\n", "a tetrahedral mesh is 3D");
   expect_refused_text("stray.mesh", vertices + "Triangles\n1\n1 2 3 0\nEnd\n", "no tetrahedra");
   expect_refused_text("notface.mesh",

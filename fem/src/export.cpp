@@ -91,6 +91,29 @@ void check_tags(const std::string& path, const char* what, const std::vector<int
     throw InvalidInput(path + ": cannot export: " + what + " " + std::to_string(*bad) + " (must be >= 1)");
 }
 
+// A second-order mesh's mid-edge nodes: one row per tet, in range, no corner among them, and
+// every boundary face a face of a tet (its nodes are that tet's).
+void validate_second_order(const TetMesh& mesh, const std::string& path) {
+  if (mesh.tet_edge_nodes.size() != mesh.tets.size())
+    throw InvalidInput(path + ": cannot export: " + std::to_string(mesh.tets.size()) + " tets but " +
+                       std::to_string(mesh.tet_edge_nodes.size()) + " rows of mid-edge nodes");
+  std::vector<bool> corner(mesh.points.size(), false);
+  for (const Tetrahedron& t : mesh.tets)
+    for (const std::uint32_t v : t) corner[v] = true;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    check_indices(path, "tet mid-edge node row", t, mesh.tet_edge_nodes[t], mesh.points.size());
+    for (const std::uint32_t v : mesh.tet_edge_nodes[t])
+      if (corner[v])
+        throw InvalidInput(path + ": cannot export: point " + std::to_string(v) +
+                           " is a tet's corner and the mid-edge node of tet " + std::to_string(t));
+  }
+  try {
+    boundary_face_edge_nodes(mesh);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(path + ": cannot export: " + e.what());
+  }
+}
+
 // Structural checks only: orientation is the TetMesh invariant (tets positive, faces outward).
 void validate(const TetMesh& mesh, const std::string& path) {
   if (mesh.tets.empty()) throw InvalidInput(path + ": cannot export: the mesh has no tetrahedra");
@@ -110,6 +133,7 @@ void validate(const TetMesh& mesh, const std::string& path) {
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) check_indices(path, "tet", t, mesh.tets[t], mesh.points.size());
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
     check_indices(path, "boundary face", f, mesh.boundary_faces[f], mesh.points.size());
+  if (mesh.quadratic()) validate_second_order(mesh, path);
   check_tags(path, "tet region", mesh.tet_regions);
   check_tags(path, "boundary tag", mesh.boundary_tags);
   for (const TagNames* names : {&mesh.region_names, &mesh.boundary_names})

@@ -1,7 +1,8 @@
-// Abaqus / CalculiX input deck .inp with linear tetrahedra (C3D4), 1-based node and element ids
+// Abaqus / CalculiX input deck .inp with linear tetrahedra (C3D4) or second-order ones (C3D10),
+// 1-based node and element ids
 // (tet t is element t + 1):
-//   *NODE; one *ELEMENT, TYPE=C3D4, ELSET=<region> block per region;
-//   per boundary tag: *NSET (the nodes of its faces), *ELSET (the tets having a face on it) and an
+//   *NODE; one *ELEMENT, TYPE=C3D4 (or C3D10), ELSET=<region> block per region;
+//   per boundary tag: *NSET (the nodes of its faces, mid-edge nodes included), *ELSET (the tets having a face on it) and an
 //   element-face surface *SURFACE, TYPE=ELEMENT with "element, S<k>" lines.
 // Names: a region's element set is named by TetMesh::region_names, else REGION_<r>. A patch
 // named in TetMesh::boundary_names gives its name to its node set and its surface, which *BOUNDARY
@@ -26,6 +27,12 @@
 // TetMesh's sense, so tets are written in their own order. Faces (Abaqus Analysis User's Guide,
 // "Three-dimensional solid element library"; CalculiX manual, C3D4): S1 = 1-2-3, S2 = 1-4-2,
 // S3 = 2-4-3, S4 = 3-4-1, each listed with its normal pointing into the element.
+//
+// C3D10: corners 1-4 as C3D4's, then nodes 5-10 on edges 1-2, 2-3, 3-1, 1-4, 2-4, 3-4 (Abaqus
+// Analysis User's Guide, "Three-dimensional solid element library", node ordering figure;
+// CalculiX CrunchiX manual, "Ten-node tetrahedral element (C3D10)"): kTetEdges' order, checked
+// on what `gmsh -3 -order 2` writes to .inp. Its faces are numbered as C3D4's, so the surfaces
+// are written alike.
 #include "exporters.h"
 
 #include "meshprep/core/atomic_file.h"
@@ -192,12 +199,17 @@ std::vector<std::size_t> distinct_ids(std::vector<std::size_t> ids) {
   return ids;
 }
 
+const char* element_type(const TetMesh& mesh) { return mesh.quadratic() ? "C3D10" : "C3D4"; }
+
+// One line per element: 11 entries at most for C3D10, within the 16 of a data line.
 void write_elements(std::ostream& out, const TetMesh& mesh, const SetNames& names) {
   for (const auto& [region, tets] : group_by_tag(mesh.tet_regions)) {
-    out << "*ELEMENT, TYPE=C3D4, ELSET=" << names.region.at(region) << '\n';
+    out << "*ELEMENT, TYPE=" << element_type(mesh) << ", ELSET=" << names.region.at(region) << '\n';
     for (std::size_t t : tets) {
       out << t + 1;
       for (std::uint32_t v : mesh.tets[t]) out << ", " << v + std::size_t{1};
+      if (mesh.quadratic())
+        for (std::uint32_t v : mesh.tet_edge_nodes[t]) out << ", " << v + std::size_t{1};
       out << '\n';
     }
   }
@@ -205,10 +217,13 @@ void write_elements(std::ostream& out, const TetMesh& mesh, const SetNames& name
 
 void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<FaceOwner>& owners,
                       const SetNames& names) {
+  const std::vector<std::array<std::uint32_t, 3>> face_nodes = boundary_face_edge_nodes(mesh);
   for (const auto& [tag, faces] : group_by_tag(mesh.boundary_tags)) {
     std::vector<std::size_t> nodes, tets;
     for (std::size_t f : faces) {
       for (std::uint32_t v : mesh.boundary_faces[f]) nodes.push_back(v);
+      if (mesh.quadratic())
+        for (std::uint32_t v : face_nodes[f]) nodes.push_back(v);
       tets.push_back(owners[f].tet);
     }
     out << "*NSET, NSET=" << names.patch_nset.at(tag) << '\n';
@@ -228,7 +243,7 @@ void write_abaqus(const TetMesh& mesh, const std::string& path, TetExportReport&
   write_file_atomically(path, [&](std::ostream& out) {
     report = {};
     out << "*HEADING\n"
-        << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << " C3D4 elements\n";
+        << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << ' ' << element_type(mesh) << " elements\n";
     write_nodes(out, mesh, report);
     write_elements(out, mesh, names);
     write_boundaries(out, mesh, owners, names);

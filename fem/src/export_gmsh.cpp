@@ -5,12 +5,16 @@
 // (0,0,1), i.e. positive volume in TetMesh's sense, so tets are written in their own order.
 // Triangles (element type 2) keep their outward orientation.
 //
+// Second order: 10-node tets (type 11) and 6-node triangles (type 9), in Gmsh's node order
+// (gmsh_elements.h).
+//
 // Tags: physical and elementary tags are the region for tets and the boundary tag for triangles;
 // the physical names are the mesh's names of them (region_<r> and boundary_<t> where it has none).
 // In 4.1 there is one discrete volume entity per region and one discrete surface entity per
 // boundary tag (entity tag = physical tag, no bounding entities); in 2.2 each element carries
 // the two tags (physical, elementary). Element tags: tet t is t + 1, boundary face f is T + f + 1.
 #include "exporters.h"
+#include "gmsh_elements.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/patch_names.h"
@@ -25,8 +29,30 @@
 namespace meshprep::detail {
 namespace {
 
-constexpr int gmsh_triangle = 2;
-constexpr int gmsh_tetrahedron = 4;
+// The elements as Gmsh lists their nodes (the writers below take either): a linear mesh's own
+// tets and boundary faces, or a second-order mesh's 10-node tets and 6-node triangles.
+struct LinearElements {
+  const std::vector<Tetrahedron>& tets;
+  const std::vector<Triangle>& faces;
+  int tet_type, face_type;
+};
+
+struct SecondOrderElements {
+  std::vector<std::array<std::uint32_t, 10>> tets;
+  std::vector<std::array<std::uint32_t, 6>> faces;
+  int tet_type, face_type;
+};
+
+SecondOrderElements second_order_elements(const TetMesh& mesh) {
+  SecondOrderElements elements{{}, {}, gmsh_tetrahedron_10, gmsh_triangle_6};
+  elements.tets.resize(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    std::copy(mesh.tets[t].begin(), mesh.tets[t].end(), elements.tets[t].begin());
+    for (int k = 0; k < 6; ++k) elements.tets[t][4 + k] = mesh.tet_edge_nodes[t][kGmshTetEdges[k]];
+  }
+  elements.faces = with_nodes(mesh.boundary_faces, boundary_face_edge_nodes(mesh));
+  return elements;
+}
 
 // The numbers of a section: text separated by spaces (ASCII), or raw native-endian values
 // (binary: int = 4 bytes, size_t = 8 bytes as declared by data-size 8, double = 8 bytes; the int 1
@@ -118,7 +144,8 @@ void add_elements(std::vector<Entity>& entities, const std::map<int, std::size_t
 // Surfaces (ascending boundary tag) then volumes (ascending region). Each node is classified on
 // the surface of the first boundary face using it, else the volume of the first tet using it
 // (nodes used by nothing go to the first volume).
-std::vector<Entity> make_entities(const TetMesh& mesh) {
+template <class Elements>
+std::vector<Entity> make_entities(const TetMesh& mesh, const Elements& elements) {
   std::vector<Entity> entities;
   std::map<int, std::size_t> surface_of;
   std::map<int, std::size_t> volume_of;
@@ -130,8 +157,8 @@ std::vector<Entity> make_entities(const TetMesh& mesh) {
     volume_of[region] = entities.size();
     entities.push_back({3, region, {}, {}, {}});
   }
-  add_elements(entities, surface_of, mesh.boundary_faces, mesh.boundary_tags, mesh);
-  add_elements(entities, volume_of, mesh.tets, mesh.tet_regions, mesh);
+  add_elements(entities, surface_of, elements.faces, mesh.boundary_tags, mesh);
+  add_elements(entities, volume_of, elements.tets, mesh.tet_regions, mesh);
 
   const std::size_t unclassified = entities.size();
   std::vector<std::size_t> node_entity(mesh.points.size(), unclassified);
@@ -139,9 +166,9 @@ std::vector<Entity> make_entities(const TetMesh& mesh) {
     for (std::uint32_t v : vertices)
       if (node_entity[v] == unclassified) node_entity[v] = entity;
   };
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
-    classify(mesh.boundary_faces[f], surface_of.at(mesh.boundary_tags[f]));
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) classify(mesh.tets[t], volume_of.at(mesh.tet_regions[t]));
+  for (std::size_t f = 0; f < elements.faces.size(); ++f)
+    classify(elements.faces[f], surface_of.at(mesh.boundary_tags[f]));
+  for (std::size_t t = 0; t < elements.tets.size(); ++t) classify(elements.tets[t], volume_of.at(mesh.tet_regions[t]));
   for (std::uint32_t v = 0; v < mesh.points.size(); ++v) {
     Entity& entity = entities[node_entity[v] == unclassified ? surface_of.size() : node_entity[v]];
     entity.nodes.push_back(v);
@@ -209,7 +236,8 @@ void write_element_block_41(MshStream& s, const Entity& entity, int type, std::s
   }
 }
 
-void write_elements_41(MshStream& s, const TetMesh& mesh, const std::vector<Entity>& entities) {
+template <class Elements>
+void write_elements_41(MshStream& s, const TetMesh& mesh, const Elements& elements, const std::vector<Entity>& entities) {
   const std::size_t num_elements = mesh.tets.size() + mesh.boundary_faces.size();
   s.size(entities.size());
   s.size(num_elements);
@@ -218,14 +246,15 @@ void write_elements_41(MshStream& s, const TetMesh& mesh, const std::vector<Enti
   s.end_line();
   for (const Entity& entity : entities) {
     if (entity.dim == 2)
-      write_element_block_41(s, entity, gmsh_triangle, mesh.tets.size() + 1, mesh.boundary_faces);
+      write_element_block_41(s, entity, elements.face_type, mesh.tets.size() + 1, elements.faces);
     else
-      write_element_block_41(s, entity, gmsh_tetrahedron, 1, mesh.tets);
+      write_element_block_41(s, entity, elements.tet_type, 1, elements.tets);
   }
 }
 
-void write_msh41(std::ostream& out, const TetMesh& mesh, bool binary) {
-  const std::vector<Entity> entities = make_entities(mesh);
+template <class Elements>
+void write_msh41(std::ostream& out, const TetMesh& mesh, const Elements& elements, bool binary) {
+  const std::vector<Entity> entities = make_entities(mesh, elements);
   const std::size_t num_surfaces = distinct_tags(mesh.boundary_tags).size();
   MshStream s(out, binary);
   write_header(out, "4.1", binary);
@@ -237,7 +266,7 @@ void write_msh41(std::ostream& out, const TetMesh& mesh, bool binary) {
   write_nodes_41(s, mesh, entities);
   s.end_section("Nodes");
   out << "$Elements\n";
-  write_elements_41(s, mesh, entities);
+  write_elements_41(s, mesh, elements, entities);
   s.end_section("Elements");
 }
 
@@ -279,29 +308,39 @@ void write_element_group_22(MshStream& s, bool binary, int type, std::size_t fir
   }
 }
 
-void write_msh22(std::ostream& out, const TetMesh& mesh, bool binary) {
+template <class Elements>
+void write_msh22(std::ostream& out, const TetMesh& mesh, const Elements& elements, bool binary) {
   MshStream s(out, binary);
   write_header(out, "2.2", binary);
   write_physical_names(out, mesh);
   write_nodes_22(out, s, mesh);
   out << "$Elements\n" << mesh.tets.size() + mesh.boundary_faces.size() << '\n';
-  write_element_group_22(s, binary, gmsh_tetrahedron, 1, mesh.tets, mesh.tet_regions);
-  write_element_group_22(s, binary, gmsh_triangle, mesh.tets.size() + 1, mesh.boundary_faces, mesh.boundary_tags);
+  write_element_group_22(s, binary, elements.tet_type, 1, elements.tets, mesh.tet_regions);
+  write_element_group_22(s, binary, elements.face_type, mesh.tets.size() + 1, elements.faces, mesh.boundary_tags);
   s.end_section("Elements");
+}
+
+template <class Elements>
+void write_gmsh_elements(const TetMesh& mesh, const Elements& elements, const std::string& path,
+                         const TetExportOptions& options) {
+  write_file_atomically(
+      path,
+      [&](std::ostream& out) {
+        if (options.msh_version == MshVersion::V22)
+          write_msh22(out, mesh, elements, options.binary);
+        else
+          write_msh41(out, mesh, elements, options.binary);
+      },
+      options.binary);
 }
 
 }  // namespace
 
 void write_gmsh(const TetMesh& mesh, const std::string& path, const TetExportOptions& options) {
-  write_file_atomically(
-      path,
-      [&](std::ostream& out) {
-        if (options.msh_version == MshVersion::V22)
-          write_msh22(out, mesh, options.binary);
-        else
-          write_msh41(out, mesh, options.binary);
-      },
-      options.binary);
+  if (mesh.quadratic())
+    write_gmsh_elements(mesh, second_order_elements(mesh), path, options);
+  else  // the mesh's own arrays, not copied
+    write_gmsh_elements(mesh, LinearElements{mesh.tets, mesh.boundary_faces, gmsh_tetrahedron, gmsh_triangle}, path, options);
 }
 
 }  // namespace meshprep::detail

@@ -5,6 +5,10 @@
 // Orientation: the same as Gmsh's, i.e. positive volume in TetMesh's sense (Mmg, the main consumer
 // of .mesh volume meshes, reorders any tetrahedron with (p1-p0).((p2-p0)x(p3-p0)) < 0 on input);
 // triangles keep their outward orientation.
+//
+// Second order: TrianglesP2 (3 corners, then the nodes of (0,1) (1,2) (2,0)) and TetrahedraP2 (4
+// corners, then the nodes of kTetEdges, VTK's order), each followed by its reference: what Gmsh
+// writes for `gmsh -3 -order 2 -o x.mesh` (checked on a box), libMeshb's keywords 24 and 30.
 #include "exporters.h"
 
 #include "meshprep/core/atomic_file.h"
@@ -38,8 +42,13 @@ void write_medit_stream(std::ostream& out, const TetMesh& mesh) {
     write_point(out, p);
     out << " 0\n";
   }
-  write_section(out, "Triangles", mesh.boundary_faces, mesh.boundary_tags);
-  write_section(out, "Tetrahedra", mesh.tets, mesh.tet_regions);
+  if (mesh.quadratic()) {
+    write_section(out, "TrianglesP2", with_nodes(mesh.boundary_faces, boundary_face_edge_nodes(mesh)), mesh.boundary_tags);
+    write_section(out, "TetrahedraP2", with_nodes(mesh.tets, mesh.tet_edge_nodes), mesh.tet_regions);
+  } else {
+    write_section(out, "Triangles", mesh.boundary_faces, mesh.boundary_tags);
+    write_section(out, "Tetrahedra", mesh.tets, mesh.tet_regions);
+  }
   out << "End\n";
 }
 

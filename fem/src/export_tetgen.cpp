@@ -4,12 +4,15 @@
 //   .ele   "<#tets> 4 1",     then "<i> <n1> <n2> <n3> <n4> <region>"
 //   .face  "<#faces> 1",      then "<i> <n1> <n2> <n3> <boundary tag>"
 // Comments are only written before the first line: some readers (meshio) skip '#' lines only there.
+// Linear tets only: a second-order mesh is refused (TetGen's own 10-node .ele, from -o2, lists
+// its mid-edge nodes in an order of its own, which neither this writer nor our reader handles).
 //
 // Orientation: TetGen itself outputs tets with (p1-p0).((p2-p0)x(p3-p0)) > 0 (checked on
 // libtet 1.5), TetMesh's convention, so tets are written in their own order; faces stay outward.
 #include "exporters.h"
 
 #include "meshprep/core/atomic_file.h"
+#include "meshprep/core/errors.h"
 
 #include <array>
 #include <cstdint>
@@ -51,6 +54,9 @@ std::string sibling(const std::string& path, const char* extension) {
 // The three writes are nested so that all three temporary files are complete before the first
 // rename (.face, then .ele, then .node): a failure while writing leaves no new file behind.
 void write_tetgen(const TetMesh& mesh, const std::string& path) {
+  if (mesh.quadratic())
+    throw InvalidInput(path + ": cannot export a second-order mesh as TetGen .node/.ele: meshprep writes "
+                              "them with linear tets only (write .msh, .vtk, .vtu, .mesh, .inp or .xdmf)");
   write_file_atomically(path, [&](std::ostream& node_out) {
     write_node_file(node_out, mesh);
     node_out.flush();

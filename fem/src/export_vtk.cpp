@@ -1,6 +1,7 @@
 // VTK legacy unstructured grid .vtk (ASCII, version 3.0), per "VTK File Formats"
 // (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html). Tets only, as VTK_TETRA
-// (cell type 10), with the region as cell data "region" and each tet's quality (tet_quality.h) as
+// (cell type 10), or VTK_QUADRATIC_TETRA (24) for a second-order mesh (vtk_cell_points), with the
+// region as cell data "region" and each tet's quality (tet_quality.h, of the corner tets) as
 // double cell data: min_dihedral_deg, max_dihedral_deg, radius_edge_ratio, scaled_jacobian.
 //
 // Orientation: vtkTetra's points 0,1,2 form a triangle whose right-hand normal points towards
@@ -17,7 +18,8 @@
 namespace meshprep::detail {
 namespace {
 
-// Legacy format: CELLS lists "4 a b c d" per tet, so its size is 5 T; 0-based point ids.
+// Legacy format: CELLS lists "4 a b c d" per tet, so its size is 5 T; 0-based point ids ("10 a b
+// c d" and six mid-edge nodes for a second-order tet, 11 T).
 void write_vtk_legacy_stream(std::ostream& out, const TetMesh& mesh) {
   out << "# vtk DataFile Version 3.0\n"
       << "meshprep tetrahedral mesh\n"
@@ -28,10 +30,15 @@ void write_vtk_legacy_stream(std::ostream& out, const TetMesh& mesh) {
     write_point(out, p);
     out << '\n';
   }
-  out << "CELLS " << mesh.tets.size() << ' ' << 5 * mesh.tets.size() << '\n';
-  for (const Tetrahedron& t : mesh.tets) out << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  const std::size_t nodes_per_cell = mesh.quadratic() ? 10 : 4;
+  out << "CELLS " << mesh.tets.size() << ' ' << (nodes_per_cell + 1) * mesh.tets.size() << '\n';
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    out << nodes_per_cell;
+    for (const std::uint32_t v : vtk_cell_points(mesh, t)) out << ' ' << v;
+    out << '\n';
+  }
   out << "CELL_TYPES " << mesh.tets.size() << '\n';
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) out << kVtkTetra << '\n';
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) out << vtk_tet_type(mesh) << '\n';
   out << "CELL_DATA " << mesh.tets.size() << '\n'
       << "SCALARS region int 1\n"
       << "LOOKUP_TABLE default\n";

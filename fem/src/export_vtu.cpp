@@ -1,9 +1,11 @@
 // VTK XML unstructured grids (.vtu, "VTK File Formats",
 // https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html), two files:
 //
-// x.vtu           the tets (VTK_TETRA, cell type 10) with the region as Int32 cell data "region"
-//                 and each tet's quality as Float64 cell data (vtk_cell_quality.h);
-// x_boundary.vtu  the boundary faces (VTK_TRIANGLE, 5), outward, on the points they use, with the
+// x.vtu           the tets (VTK_TETRA, cell type 10; VTK_QUADRATIC_TETRA, 24, second-order) with
+//                 the region as Int32 cell data "region" and each tet's quality as Float64 cell data
+//                 (vtk_cell_quality.h);
+// x_boundary.vtu  the boundary faces (VTK_TRIANGLE, 5; VTK_QUADRATIC_TRIANGLE, 22), outward, on the
+//                 points they use, with the
 //                 boundary tag as Int32 cell data "patch" and, as Int64 point data "mesh_point_id",
 //                 each point's 0-based index in x.vtu (which import_vtu.cpp reads them back by).
 //
@@ -25,6 +27,7 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/patch_names.h"
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <ostream>
@@ -63,10 +66,14 @@ VtuPiece tets_piece(const TetMesh& mesh) {
   piece.num_points = mesh.points.size();
   piece.num_cells = mesh.tets.size();
   piece.points = points_array(mesh.points);
+  const std::size_t nodes_per_tet = mesh.quadratic() ? 10 : 4;
   std::vector<std::int64_t> connectivity;
-  connectivity.reserve(4 * mesh.tets.size());
-  for (const Tetrahedron& t : mesh.tets) connectivity.insert(connectivity.end(), t.begin(), t.end());
-  set_cells(piece, connectivity, 4, kVtkTetra);
+  connectivity.reserve(nodes_per_tet * mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    connectivity.insert(connectivity.end(), mesh.tets[t].begin(), mesh.tets[t].end());
+    if (mesh.quadratic()) connectivity.insert(connectivity.end(), mesh.tet_edge_nodes[t].begin(), mesh.tet_edge_nodes[t].end());
+  }
+  set_cells(piece, connectivity, nodes_per_tet, static_cast<std::uint8_t>(vtk_tet_type(mesh)));
   piece.cell_scalars = "region";
   piece.cell_data.push_back(vtu_array("region", std::vector<std::int32_t>(mesh.tet_regions.begin(), mesh.tet_regions.end())));
   const std::vector<TetShape> shapes = tet_shapes(mesh);
@@ -79,26 +86,33 @@ VtuPiece tets_piece(const TetMesh& mesh) {
   return piece;
 }
 
-// The boundary faces on the points they use, in order of first use.
+// The boundary faces on the points they use, in order of first use; a second-order mesh's as
+// VTK_QUADRATIC_TRIANGLE (corners, then the nodes of edges (0,1) (1,2) (2,0)).
 VtuPiece boundary_piece(const TetMesh& mesh) {
   VtuPiece piece;
   std::map<std::uint32_t, std::int64_t> local;  // mesh point -> its index here
   std::vector<std::int64_t> mesh_point_id, connectivity;
   std::vector<Vec3> points;
-  for (const Triangle& face : mesh.boundary_faces)
-    for (const std::uint32_t v : face) {
-      const auto [it, added] = local.emplace(v, static_cast<std::int64_t>(points.size()));
-      if (added) {
-        points.push_back(mesh.points[v]);
-        mesh_point_id.push_back(v);
-      }
-      connectivity.push_back(it->second);
+  const auto add = [&](std::uint32_t v) {
+    const auto [it, added] = local.emplace(v, static_cast<std::int64_t>(points.size()));
+    if (added) {
+      points.push_back(mesh.points[v]);
+      mesh_point_id.push_back(v);
     }
+    connectivity.push_back(it->second);
+  };
+  const std::vector<std::array<std::uint32_t, 3>> edge_nodes = boundary_face_edge_nodes(mesh);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    for (const std::uint32_t v : mesh.boundary_faces[f]) add(v);
+    if (mesh.quadratic())
+      for (const std::uint32_t v : edge_nodes[f]) add(v);
+  }
   piece.num_points = points.size();
   piece.num_cells = mesh.boundary_faces.size();
   piece.point_data.push_back(vtu_array("mesh_point_id", mesh_point_id));
   piece.points = points_array(points);
-  set_cells(piece, connectivity, 3, kVtkTriangle);
+  set_cells(piece, connectivity, mesh.quadratic() ? 6 : 3,
+            static_cast<std::uint8_t>(mesh.quadratic() ? kVtkQuadraticTriangle : kVtkTriangle));
   piece.cell_scalars = "patch";
   piece.cell_data.push_back(vtu_array("patch", std::vector<std::int32_t>(mesh.boundary_tags.begin(), mesh.boundary_tags.end())));
   piece.tag_names = tag_names(mesh.boundary_names, mesh.boundary_tags, "boundary", 2);

@@ -15,7 +15,10 @@
 //                 .../topology, a hard link to /Mesh/mesh/topology (the same tets in the same
 //                 order: 40 % of the .h5 for the femur's 204 k tets, not written twice)
 // dolfinx's read_meshtags finds each tagged entity by its vertices, so any order of faces or cells
-// works. Node order: XDMF's Tetrahedron is VTK's, whose positive volume is TetMesh's
+// works. A second-order mesh is written as dolfinx 0.5.2 writes a mesh of P2 geometry (checked:
+// XDMFFile.write_mesh and write_meshtags on a 10-node box from Gmsh): "Tetrahedron_10" (T x 10)
+// and "Triangle_6" (F x 6), the corners first, then the mid-edge nodes in VTK's order, kTetEdges'
+// for tets and (0,1) (1,2) (2,0) for triangles. Node order: XDMF's Tetrahedron is VTK's, whose positive volume is TetMesh's
 // ((p1-p0).((p2-p0)x(p3-p0)) > 0); triangles are outward, as in TetMesh. The DataItems also state
 // NumberType and Precision, which dolfinx leaves to their defaults (Float, 4) although its data is
 // 8 bytes wide; readers of HDF data take the type from the dataset.
@@ -108,11 +111,13 @@ void write_heavy_data(const TetMesh& mesh, const std::string& file, const std::s
   std::vector<double> coordinates;
   coordinates.reserve(mesh.points.size() * 3);
   for (const Vec3& p : mesh.points) coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
-  const std::vector<std::int64_t> tets = flat_indices(mesh.tets);
-  const std::vector<std::int64_t> faces = flat_indices(mesh.boundary_faces);
+  const bool p2 = mesh.quadratic();
+  const std::vector<std::int64_t> tets = p2 ? flat_indices(with_nodes(mesh.tets, mesh.tet_edge_nodes)) : flat_indices(mesh.tets);
+  const std::vector<std::int64_t> faces = p2 ? flat_indices(with_nodes(mesh.boundary_faces, boundary_face_edge_nodes(mesh)))
+                                             : flat_indices(mesh.boundary_faces);
   out.dataset("/Mesh/mesh/geometry", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, mesh.points.size(), 3, coordinates.data());
-  out.dataset("/Mesh/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, mesh.tets.size(), 4, tets.data());
-  out.dataset("/MeshTags/facet_tags/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, mesh.boundary_faces.size(), 3,
+  out.dataset("/Mesh/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, mesh.tets.size(), p2 ? 10 : 4, tets.data());
+  out.dataset("/MeshTags/facet_tags/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, mesh.boundary_faces.size(), p2 ? 6 : 3,
               faces.data());
   out.dataset("/MeshTags/facet_tags/Values", H5T_STD_I32LE, H5T_NATIVE_INT, mesh.boundary_tags.size(), 1,
               mesh.boundary_tags.data());
@@ -167,14 +172,16 @@ class LightDataWriter {
          << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
          << "  <Domain>\n"
          << "    <Grid Name=\"mesh\" GridType=\"Uniform\">\n";
-    topology("Tetrahedron", mesh.tets.size(), 4, "/Mesh/mesh/topology");
+    const bool p2 = mesh.quadratic();
+    const char* tetrahedron = p2 ? "Tetrahedron_10" : "Tetrahedron";
+    topology(tetrahedron, mesh.tets.size(), p2 ? 10 : 4, "/Mesh/mesh/topology");
     out_ << "      <Geometry GeometryType=\"XYZ\">\n";
     data_item("        ", mesh.points.size(), 3, "Float", 8, "/Mesh/mesh/geometry");
     out_ << "      </Geometry>\n"
          << "    </Grid>\n";
-    tag_grid("facet_tags", "Triangle", mesh.boundary_faces.size(), 3,
+    tag_grid("facet_tags", p2 ? "Triangle_6" : "Triangle", mesh.boundary_faces.size(), p2 ? 6 : 3,
              names_to_write(mesh.boundary_names, mesh.boundary_tags, "boundary"));
-    tag_grid("cell_tags", "Tetrahedron", mesh.tets.size(), 4,
+    tag_grid("cell_tags", tetrahedron, mesh.tets.size(), p2 ? 10 : 4,
              names_to_write(mesh.region_names, mesh.tet_regions, "region"));
     out_ << "  </Domain>\n"
          << "</Xdmf>\n";

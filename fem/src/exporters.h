@@ -5,6 +5,9 @@
 
 #include "meshprep/fem/export.h"
 
+#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -27,5 +30,18 @@ void write_point(std::ostream& out, const Vec3& p, const char* separator = " ");
 
 /// The distinct values of `tags`, ascending (the regions or boundary tags present in a mesh).
 std::vector<int> distinct_tags(const std::vector<int>& tags);
+
+/// Second-order elements as most formats list them: each element's corners, then its mid-edge
+/// nodes (`nodes`, one row per element).
+template <std::size_t N, std::size_t M>
+std::vector<std::array<std::uint32_t, N + M>> with_nodes(const std::vector<std::array<std::uint32_t, N>>& corners,
+                                                         const std::vector<std::array<std::uint32_t, M>>& nodes) {
+  std::vector<std::array<std::uint32_t, N + M>> elements(corners.size());
+  for (std::size_t e = 0; e < corners.size(); ++e) {
+    std::copy(corners[e].begin(), corners[e].end(), elements[e].begin());
+    std::copy(nodes[e].begin(), nodes[e].end(), elements[e].begin() + N);
+  }
+  return elements;
+}
 
 }  // namespace meshprep::detail

@@ -29,6 +29,15 @@ const ImproveParameters& improve_parameters() {
   return parameters;
 }
 
+const ElementOrderParameters& element_order_parameters() {
+  static const ElementOrderParameters parameters{
+      {"order", "--order",
+       "element order: 1 = linear tets, 2 = 10-node tets whose boundary edges' mid-nodes lie on the surface where "
+       "no tet folds",
+       {1, 2}}};
+  return parameters;
+}
+
 const VerdictParameters& verdict_parameters() {
   static const VerdictParameters parameters{
       {"min_dihedral_deg", "--min-dihedral-threshold",

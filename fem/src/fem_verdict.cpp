@@ -62,7 +62,8 @@ TetVerdict judge_tets(const TetQualityReport& report, const TetThresholds& thres
   verdict.checks.push_back(judged(kChecks[0], thresholds.min_dihedral_deg, report.min_dihedral_deg.min));
   verdict.checks.push_back(judged(kChecks[1], thresholds.max_dihedral_deg, report.max_dihedral_deg.max));
   verdict.checks.push_back(judged(kChecks[2], static_cast<double>(thresholds.max_inverted_tets),
-                                  static_cast<double>(report.inverted_tets)));
+                                  static_cast<double>(report.quadratic ? report.quadratic->nonpositive_jacobian_tets
+                                                                          : report.inverted_tets)));
   return verdict;
 }
 

@@ -15,6 +15,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
 
 namespace meshprep {
 namespace detail {
@@ -102,14 +103,66 @@ void normalise_tags(std::vector<int>& tags, const char* element, const char* wha
   }
 }
 
+// Swapping corners 2 and 3 turns kTetEdges' (1,2) into (1,3) and (0,2) into (0,3): a second-order
+// tet's nodes 1 and 4, 2 and 3 swap with them; (0,1) and (2,3) keep theirs.
 std::size_t orient_positively(TetMesh& mesh) {
   std::size_t reoriented = 0;
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     if (tet_volume(mesh, t) >= 0) continue;
     std::swap(mesh.tets[t][2], mesh.tets[t][3]);
+    if (mesh.quadratic()) {
+      std::swap(mesh.tet_edge_nodes[t][1], mesh.tet_edge_nodes[t][4]);
+      std::swap(mesh.tet_edge_nodes[t][2], mesh.tet_edge_nodes[t][3]);
+    }
     ++reoriented;
   }
   return reoriented;
+}
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+}
+
+// A second-order file's mid-edge nodes, checked and given to `mesh`: every tet has them (a file
+// mixing orders is refused), an edge has one node whichever tet lists it, no node is also a
+// corner, and a 6-node triangle's nodes are those its edges have in the tets.
+void attach_edge_nodes(TetMesh& mesh, TetFileContent& content, const std::string& name) {
+  if (content.tet_edge_nodes.empty()) {
+    if (!content.triangle_edge_nodes.empty())
+      fail(name, "6-node triangles on linear tetrahedra (meshprep reads meshes of one order)");
+    return;
+  }
+  if (content.tet_edge_nodes.size() != mesh.tets.size())
+    fail(name, std::to_string(content.tet_edge_nodes.size()) + " of the " + std::to_string(mesh.tets.size()) +
+                   " tetrahedra have 10 nodes, the others 4 (meshprep reads meshes of one order)");
+  if (!content.triangle_edge_nodes.empty() && content.triangle_edge_nodes.size() != content.triangles.size())
+    fail(name, std::to_string(content.triangle_edge_nodes.size()) + " of the " + std::to_string(content.triangles.size()) +
+                   " triangles have 6 nodes, the others 3 (meshprep reads meshes of one order)");
+  std::vector<bool> corner(mesh.points.size(), false);
+  for (const Tetrahedron& t : mesh.tets)
+    for (const std::uint32_t v : t) corner[v] = true;
+  std::unordered_map<std::uint64_t, std::uint32_t> node_of_edge;
+  node_of_edge.reserve(mesh.tets.size() * 2);  // about 1.2 edges per tet in a tet mesh, 6 listings
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    for (int e = 0; e < 6; ++e) {
+      const std::uint32_t a = mesh.tets[t][kTetEdges[e][0]], b = mesh.tets[t][kTetEdges[e][1]];
+      const std::uint32_t node = content.tet_edge_nodes[t][e];
+      if (corner[node])
+        fail(name, "point " + ordinal(node) + " is a corner and the mid-edge node of tetrahedron " + ordinal(t));
+      const auto [it, added] = node_of_edge.emplace(edge_key(a, b), node);
+      if (!added && it->second != node)
+        fail(name, "the edge of points " + ordinal(a) + " and " + ordinal(b) + " has two mid-edge nodes, " +
+                       ordinal(it->second) + " and " + ordinal(node) + " (tetrahedron " + ordinal(t) + ")");
+    }
+  for (std::size_t f = 0; f < content.triangle_edge_nodes.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Triangle& triangle = content.triangles[f];
+      const auto it = node_of_edge.find(edge_key(triangle[k], triangle[(k + 1) % 3]));
+      if (it != node_of_edge.end() && it->second != content.triangle_edge_nodes[f][k])
+        fail(name, "triangle " + ordinal(f) + " has mid-edge node " + ordinal(content.triangle_edge_nodes[f][k]) +
+                       " where its tetrahedra have " + ordinal(it->second));
+    }
+  mesh.tet_edge_nodes = std::move(content.tet_edge_nodes);
 }
 
 // Two tets with the same corners, or a face shared by more than two tets, is refused.
@@ -257,6 +310,7 @@ TetMesh assemble_tet_mesh(TetFileContent content, const std::string& name, TetRe
   mesh.points = std::move(content.points);
   mesh.tets = std::move(content.tets);
   mesh.tet_regions = std::move(content.tet_regions);
+  attach_edge_nodes(mesh, content, name);
   read.tets_reoriented = orient_positively(mesh);
   const TetFaces faces(mesh.tets);
   check_face_groups(faces, mesh.tets, name);

@@ -15,9 +15,11 @@
 // blocks (a 4.1 file lists nodes and elements grouped by entity); for a file write_tet_mesh wrote,
 // that is the mesh's own order.
 //
-// Elements: linear tets (type 4) and triangles (type 2) are read; points, lines, quadrangles and
+// Elements: tets and triangles, linear (types 4, 2) or second-order (11, 9; their mid-edge nodes
+// put in kTetEdges' order, gmsh_elements.h) are read; points, lines, quadrangles and other
 // higher-order surface elements are skipped (counted); other volume elements are refused, as are
 // element types outside the manual's list (1-31), whose node count this reader does not know.
+#include "gmsh_elements.h"
 #include "importers.h"
 
 #include "file_cursor.h"
@@ -30,9 +32,6 @@
 
 namespace meshprep::detail {
 namespace {
-
-constexpr std::int64_t gmsh_triangle = 2;
-constexpr std::int64_t gmsh_tetrahedron = 4;
 
 struct ElementType {
   int nodes;
@@ -116,14 +115,17 @@ void permute(std::vector<T>& values, const std::vector<std::size_t>& order) {
   values = std::move(permuted);
 }
 
-// Puts elements and their tags in element-tag order (a 4.1 file lists them by entity).
-template <class Element>
-void sort_by_tag(std::vector<std::uint64_t>& tags, std::vector<Element>& elements, std::vector<int>& labels) {
+// Puts elements, their tags and their mid-edge nodes (if every element has them: a file mixing
+// orders is refused later) in element-tag order (a 4.1 file lists them by entity).
+template <class Element, class EdgeNodes>
+void sort_by_tag(std::vector<std::uint64_t>& tags, std::vector<Element>& elements, std::vector<int>& labels,
+                 std::vector<EdgeNodes>& edge_nodes) {
   if (std::is_sorted(tags.begin(), tags.end())) return;
   const std::vector<std::size_t> order = tag_order(tags);
   permute(tags, order);
   permute(elements, order);
   permute(labels, order);
+  if (edge_nodes.size() == elements.size()) permute(edge_nodes, order);
 }
 
 // Node tags -> point indices. The points are put in node-tag order (a 4.1 file lists them by
@@ -182,8 +184,8 @@ class GmshReader {
       } else if (section == "$Elements") {
         if (elements_read_) in_.fail_here("a second $Elements section");
         version_ == Version::V41 ? read_elements_41() : read_elements_2();
-        sort_by_tag(tet_tags_, content_.tets, content_.tet_regions);
-        sort_by_tag(triangle_tags_, content_.triangles, content_.triangle_tags);
+        sort_by_tag(tet_tags_, content_.tets, content_.tet_regions, content_.tet_edge_nodes);
+        sort_by_tag(triangle_tags_, content_.triangles, content_.triangle_tags, content_.triangle_edge_nodes);
         elements_read_ = true;
       } else if (section == "$Entities" && version_ == Version::V41) {
         read_entities_41();
@@ -330,16 +332,16 @@ class GmshReader {
       in_.fail_here("element " + std::to_string(element) + " has type " + std::to_string(type) +
                     ", which this reader does not know (types 1-31 are read)");
     const ElementType& t = element_types[type - 1];
-    if (t.dimension == 3 && type != gmsh_tetrahedron)
+    if (t.dimension == 3 && type != gmsh_tetrahedron && type != gmsh_tetrahedron_10)
       in_.fail_here("element " + std::to_string(element) + " is a " + t.name + " (type " + std::to_string(type) +
-                    "); meshprep reads linear tetrahedra (type 4) only");
+                    "); meshprep reads tetrahedra of 4 and 10 nodes (types 4, 11) only");
     return t;
   }
 
   // The nodes of one element (4.1: size_t tags, 2.x: ints) into a tet or a triangle; other
   // (lower-dimensional) types are counted and dropped.
   void read_element(std::int64_t type, const ElementType& t, std::int64_t element, int physical) {
-    std::uint32_t corners[4] = {0, 0, 0, 0};
+    std::uint32_t nodes[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     for (int k = 0; k < t.nodes; ++k) {
       const std::uint64_t tag = version_ == Version::V41 ? msh_.size("node tag")
                                                          : static_cast<std::uint64_t>(msh_.integer("node number"));
@@ -348,16 +350,22 @@ class GmshReader {
         in_.fail_here("element " + std::to_string(element) + " references node " +
                       std::to_string(static_cast<std::int64_t>(tag)) + ", which $Nodes does not define (" +
                       std::to_string(nodes_.size()) + " nodes)");
-      if (k < 4) corners[k] = index;
+      if (k < 10) nodes[k] = index;
     }
-    if (type == gmsh_tetrahedron) {
-      content_.tets.push_back({corners[0], corners[1], corners[2], corners[3]});
+    if (type == gmsh_tetrahedron || type == gmsh_tetrahedron_10) {
+      content_.tets.push_back({nodes[0], nodes[1], nodes[2], nodes[3]});
       tet_tags_.push_back(static_cast<std::uint64_t>(element));
       content_.tet_regions.push_back(physical);
-    } else if (type == gmsh_triangle) {
-      content_.triangles.push_back({corners[0], corners[1], corners[2]});
+      if (type == gmsh_tetrahedron_10) {
+        TetEdgeNodes edge_nodes{};
+        for (int k = 0; k < 6; ++k) edge_nodes[kGmshTetEdges[k]] = nodes[4 + k];
+        content_.tet_edge_nodes.push_back(edge_nodes);
+      }
+    } else if (type == gmsh_triangle || type == gmsh_triangle_6) {
+      content_.triangles.push_back({nodes[0], nodes[1], nodes[2]});
       triangle_tags_.push_back(static_cast<std::uint64_t>(element));
       content_.triangle_tags.push_back(physical);
+      if (type == gmsh_triangle_6) content_.triangle_edge_nodes.push_back({nodes[3], nodes[4], nodes[5]});
     } else {
       ++content_.elements_ignored;
     }

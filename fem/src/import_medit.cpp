@@ -6,8 +6,11 @@
 // "Vertices n" and n lines "x y z ref", "Triangles n" and n lines "i j k ref", "Tetrahedra n" and
 // n lines "i j k l ref" (1-based vertex numbers), ..., "End". '#' starts a comment. The ref of a
 // tetrahedron is its region, that of a triangle its boundary tag. Other keywords (Edges, Corners,
-// Ridges, Normals, ...) are read past: their data are numbers up to the next keyword. Volume
-// elements other than linear tetrahedra (Hexahedra, Prisms, Pyramids, TetrahedraP2, ...) are refused.
+// Ridges, Normals, ...) are read past: their data are numbers up to the next keyword.
+// Second-order elements: "TetrahedraP2" (4 corners, then the nodes of edges (0,1) (1,2) (2,0)
+// (0,3) (1,3) (2,3), kTetEdges' order, ref) and "TrianglesP2" (3 corners, then (0,1) (1,2) (2,0),
+// ref), as Gmsh writes them (checked: gmsh 4.8 -order 2 to .mesh). Other volume elements
+// (Hexahedra, Prisms, Pyramids, TetrahedraP3, ...) are refused.
 #include "importers.h"
 
 #include "file_cursor.h"
@@ -62,10 +65,18 @@ class MeditReader {
       read_elements("triangle", content_.triangles, content_.triangle_tags);
     } else if (keyword == "Tetrahedra") {
       read_elements("tetrahedron", content_.tets, content_.tet_regions);
+    } else if (keyword == "TrianglesP2") {
+      std::vector<std::array<std::uint32_t, 6>> triangles;
+      read_elements("triangle", triangles, content_.triangle_tags);
+      split_nodes(triangles, content_.triangles, content_.triangle_edge_nodes);
+    } else if (keyword == "TetrahedraP2") {
+      std::vector<std::array<std::uint32_t, 10>> tets;
+      read_elements("tetrahedron", tets, content_.tet_regions);
+      split_nodes(tets, content_.tets, content_.tet_edge_nodes);
     } else if (is_other_volume_element(keyword)) {
       const std::uint64_t count = in_.count(std::string(keyword).c_str());
       if (count > 0)
-        in_.fail_here(std::to_string(count) + " " + std::string(keyword) + ": meshprep reads linear tetrahedra only");
+        in_.fail_here(std::to_string(count) + " " + std::string(keyword) + ": meshprep reads Tetrahedra and TetrahedraP2 only");
     } else {
       if (keyword == "Edges" || keyword == "Quadrilaterals") content_.elements_ignored += in_.count("element count");
       while (!in_.at_end() && !is_keyword(in_.peek_token())) in_.token();

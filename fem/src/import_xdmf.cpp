@@ -6,7 +6,10 @@
 //
 // What is read, from the Uniform grids directly under /Xdmf/Domain (where dolfinx looks):
 // - the mesh: the grid named "mesh" (dolfinx's default name), else the first grid with a Geometry
-//   of its own. Its Topology must be "Tetrahedron" (4 nodes per cell, 0-based point indices), its
+//   of its own. Its Topology must be "Tetrahedron" (4 nodes per cell, 0-based point indices) or
+//   "Tetrahedron_10" (the corners, then the nodes of edges (0,1) (1,2) (2,0) (0,3) (1,3) (2,3): VTK's
+//   order, which dolfinx's XDMF files and meshio's use; then the tag grids' are "Triangle_6" and
+//   "Tetrahedron_10"), its
 //   Geometry "XYZ" (one N x 3 DataItem). Its regions: a cell-centred Attribute named like a VTK
 //   region array (region, gmsh:physical, ...: vtk_cells.h; what meshio writes), unless a
 //   "cell_tags" grid gives them.
@@ -36,6 +39,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 namespace meshprep::detail {
 namespace {
@@ -200,7 +204,7 @@ class HeavyData {
 struct Topology {
   const Element* element = nullptr;
   std::string_view type;
-  std::size_t nodes = 0;  // per cell: 4 or 3; 0 for any other type
+  std::size_t nodes = 0;  // per cell: 4, 10, 3 or 6; 0 for any other type
 };
 
 class XdmfReader {
@@ -231,10 +235,11 @@ class XdmfReader {
     const Element* mesh = find_mesh_grid(grids);
     if (!mesh) xml_.fail_at(domain->offset, "no <Grid> with a <Geometry> of its own (the mesh) in the <Domain>");
     read_mesh(*mesh);
-    const Element* cell_tags = find_tag_grid(grids, mesh, "cell_tags", 4);
-    const Element* facet_tags = find_tag_grid(grids, mesh, "facet_tags", 3);
-    if (cell_tags) read_cell_tags(*cell_tags);
-    if (facet_tags) read_facet_tags(*facet_tags);
+    const bool second_order = !content_.tet_edge_nodes.empty();
+    const Element* cell_tags = find_tag_grid(grids, mesh, "cell_tags", second_order ? 10 : 4);
+    const Element* facet_tags = find_tag_grid(grids, mesh, "facet_tags", second_order ? 6 : 3);
+    if (cell_tags) read_cell_tags(*cell_tags, second_order);
+    if (facet_tags) read_facet_tags(*facet_tags, second_order);
     content_.format = "xdmf " + std::string(version.empty() ? "2" : version) + (used_hdf_ ? " hdf5" : " xml");
     return std::move(content_);
   }
@@ -263,7 +268,7 @@ class XdmfReader {
     if (!t.element) return t;
     // XDMF 3 names the attribute Type, XDMF 2 and dolfinx TopologyType.
     t.type = t.element->attribute("TopologyType").value_or(t.element->attribute("Type").value_or(""));
-    t.nodes = t.type == "Tetrahedron" ? 4 : t.type == "Triangle" ? 3 : 0;
+    t.nodes = t.type == "Tetrahedron" ? 4 : t.type == "Tetrahedron_10" ? 10 : t.type == "Triangle" ? 3 : t.type == "Triangle_6" ? 6 : 0;
     if (t.nodes != 0) {
       const std::optional<std::string_view> nodes = t.element->attribute("NodesPerElement");
       std::int64_t n = 0;
@@ -423,9 +428,12 @@ class XdmfReader {
       content_.triangle_tags.assign(content_.triangles.size(), 0);
       return;  // a surface: assemble_tet_mesh says so
     }
-    if (t.nodes != 4)
-      xml_.fail_at(t.element->offset, "TopologyType " + quoted(t.type) + ": meshprep reads linear tetrahedra only");
-    content_.tets = cells<4>(t, "tetrahedron");
+    if (t.nodes == 10)
+      split_nodes(cells<10>(t, "tetrahedron"), content_.tets, content_.tet_edge_nodes);
+    else if (t.nodes == 4)
+      content_.tets = cells<4>(t, "tetrahedron");
+    else
+      xml_.fail_at(t.element->offset, "TopologyType " + quoted(t.type) + ": meshprep reads Tetrahedron and Tetrahedron_10 only");
     content_.tet_regions.assign(content_.tets.size(), 0);
     if (const Element* regions = cell_attribute(grid, true)) content_.tet_regions = tags(*regions, content_.tets.size());
   }
@@ -444,15 +452,34 @@ class XdmfReader {
     return {std::move(entities), std::move(values)};
   }
 
-  void read_facet_tags(const Element& grid) {
-    auto [triangles, values] = tagged<3>(grid, "triangle");
-    content_.triangles.insert(content_.triangles.end(), triangles.begin(), triangles.end());
+  void read_facet_tags(const Element& grid, bool second_order) {
+    std::vector<int> values;
+    if (second_order) {
+      auto [triangles, tags] = tagged<6>(grid, "triangle");
+      split_nodes(triangles, content_.triangles, content_.triangle_edge_nodes);
+      values = std::move(tags);
+    } else {
+      auto [triangles, tags] = tagged<3>(grid, "triangle");
+      content_.triangles.insert(content_.triangles.end(), triangles.begin(), triangles.end());
+      values = std::move(tags);
+    }
     content_.triangle_tags.insert(content_.triangle_tags.end(), values.begin(), values.end());
     content_.triangle_names = names(grid, "boundary");
   }
 
-  void read_cell_tags(const Element& grid) {
-    auto [tets, values] = tagged<4>(grid, "tetrahedron");
+  // A second-order mesh's tagged tets are found by their corners: their mid-edge nodes are those
+  // the mesh grid gives them.
+  void read_cell_tags(const Element& grid, bool second_order) {
+    std::vector<Tetrahedron> tets;
+    std::vector<int> values;
+    if (second_order) {
+      auto [tets_10, tags] = tagged<10>(grid, "tetrahedron");
+      std::vector<TetEdgeNodes> edge_nodes_as_in_the_mesh;
+      split_nodes(tets_10, tets, edge_nodes_as_in_the_mesh);
+      values = std::move(tags);
+    } else {
+      std::tie(tets, values) = tagged<4>(grid, "tetrahedron");
+    }
     if (tets == content_.tets) {
       content_.tet_regions = std::move(values);  // what export_xdmf.cpp writes: the same tets
     } else {

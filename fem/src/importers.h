@@ -7,6 +7,7 @@
 
 #include "meshprep/fem/import.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -25,6 +26,12 @@ struct TetFileContent {
   std::vector<int> tet_regions;    ///< one per tet, as in the file (0 = none)
   std::vector<Triangle> triangles; ///< indices < points.size()
   std::vector<int> triangle_tags;  ///< one per triangle, as in the file (0 = none)
+  /// Second-order files: the mid-edge nodes of each 10-node tet in kTetEdges' order (readers of
+  /// another order permute) and of each 6-node triangle ((0,1) (1,2) (2,0)), one row per element
+  /// of that kind read; empty when the file has none. A file that mixes linear and second-order
+  /// elements of a kind is refused by assemble_tet_mesh (the row counts differ).
+  std::vector<TetEdgeNodes> tet_edge_nodes;
+  std::vector<std::array<std::uint32_t, 3>> triangle_edge_nodes;
   std::size_t elements_ignored = 0;
   TagNames region_names, triangle_names;  ///< names the file gives its tags (Gmsh physical names, XDMF <Information>)
   std::string points_file;  ///< names the points in messages when they are in another file (TetGen's .node)
@@ -61,6 +68,21 @@ TetMesh read_xdmf_file(const std::string& path, TetReadReport* report);
 /// refused; tets are turned positive, regions and tags 0 become 1, the boundary is completed.
 /// `name` names the input in messages; `report` (may be null) receives the counts.
 TetMesh assemble_tet_mesh(TetFileContent content, const std::string& name, TetReadReport* report);
+
+/// Splits elements of N + M nodes into their N corners and M mid-edge nodes (appended to
+/// `corners` and `nodes`).
+template <std::size_t N, std::size_t M>
+void split_nodes(const std::vector<std::array<std::uint32_t, N + M>>& elements, std::vector<std::array<std::uint32_t, N>>& corners,
+                 std::vector<std::array<std::uint32_t, M>>& nodes) {
+  for (const auto& element : elements) {
+    std::array<std::uint32_t, N> c;
+    std::array<std::uint32_t, M> m;
+    for (std::size_t k = 0; k < N; ++k) c[k] = element[k];
+    for (std::size_t k = 0; k < M; ++k) m[k] = element[N + k];
+    corners.push_back(c);
+    nodes.push_back(m);
+  }
+}
 
 /// read_tet_mesh on a file already in memory, in the given format (`name` names it in messages;
 /// nothing touches the disk).

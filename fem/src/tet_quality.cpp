@@ -3,6 +3,8 @@
 // Geometric Quality Library", SAND2007-1751, 2007; sandialabs/verdict V_TetMetric.cpp).
 #include "meshprep/fem/tet_quality.h"
 
+#include "quadratic_jacobian.h"
+
 #include "meshprep/core/errors.h"
 #include "meshprep/quality/json_values.h"
 
@@ -90,6 +92,45 @@ void check_point_indices(const TetMesh& mesh) {
       if (v >= mesh.points.size())
         throw InvalidInput("tet mesh: tet " + std::to_string(t) + " references point " + std::to_string(v) +
                            " of " + std::to_string(mesh.points.size()));
+  if (!mesh.quadratic()) return;
+  if (mesh.tet_edge_nodes.size() != mesh.tets.size())
+    throw InvalidInput("tet mesh: " + std::to_string(mesh.tet_edge_nodes.size()) + " rows of mid-edge nodes for " +
+                       std::to_string(mesh.tets.size()) + " tets");
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    for (const auto v : mesh.tet_edge_nodes[t])
+      if (v >= mesh.points.size())
+        throw InvalidInput("tet mesh: tet " + std::to_string(t) + " has mid-edge node " + std::to_string(v) + " of " +
+                           std::to_string(mesh.points.size()) + " points");
+}
+
+// Whether a mid-edge node of tet t is off its edge's midpoint by more than 1e-9 of the edge's length
+// (a straight node written and read back, or computed another way, is within round-off of it).
+bool curved(const std::array<Vec3, 10>& x) {
+  for (int e = 0; e < 6; ++e) {
+    const Vec3 &a = x[kTetEdges[e][0]], &b = x[kTetEdges[e][1]];
+    if ((x[4 + e] - 0.5 * (a + b)).norm() > 1e-9 * (b - a).norm()) return true;
+  }
+  return false;
+}
+
+QuadraticTetQuality quadratic_quality(const TetMesh& mesh, const std::vector<TetShape>& shapes) {
+  QuadraticTetQuality q;
+  std::vector<double>& per_tet = q.min_scaled_jacobian_per_tet;
+  per_tet.resize(mesh.tets.size());
+  std::vector<std::uint8_t> nonpositive(mesh.tets.size()), is_curved(mesh.tets.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.tets.size(), 4096), [&](const auto& range) {
+    for (std::size_t t = range.begin(); t != range.end(); ++t) {
+      const std::array<Vec3, 10> x = detail::tet_nodes(mesh, t);
+      const detail::NodalJacobian jacobian = detail::nodal_jacobian(x);
+      per_tet[t] = jacobian.min_scaled;
+      nonpositive[t] = shapes[t].volume <= 0 || !(jacobian.min > 0);
+      is_curved[t] = curved(x);
+    }
+  });
+  q.nonpositive_jacobian_tets = static_cast<std::size_t>(std::count(nonpositive.begin(), nonpositive.end(), 1));
+  q.curved_tets = static_cast<std::size_t>(std::count(is_curved.begin(), is_curved.end(), 1));
+  q.min_scaled_jacobian = summarize(per_tet);
+  return q;
 }
 
 // The `count` tets of smallest dihedral angle, smallest first; ties by index, so that the list
@@ -187,6 +228,7 @@ TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tet_
   r.scaled_jacobian = summarize(r.scaled_jacobian_per_tet);
   r.aspect_ratio = summarize(r.aspect_ratio_per_tet);
   r.worst_tets = worst_tets(mesh, shapes, worst_tet_count);
+  if (mesh.quadratic()) r.quadratic = quadratic_quality(mesh, shapes);
   return r;
 }
 
@@ -195,7 +237,7 @@ Json to_json(const TetQualityReport& report) {
   for (const auto& [region, count] : report.tets_per_region) regions[std::to_string(region)] = count;
   Json worst = Json::array();
   for (const WorstTet& w : report.worst_tets) worst.push_back(worst_tet_json(w));
-  return {{"points", report.points},
+  Json json = {{"points", report.points},
           {"tetrahedra", report.tetrahedra},
           {"volume", json_number(report.volume)},
           {"inverted_tets", report.inverted_tets},
@@ -207,6 +249,11 @@ Json to_json(const TetQualityReport& report) {
           {"scaled_jacobian", json_distribution(report.scaled_jacobian)},
           {"aspect_ratio", json_distribution(report.aspect_ratio)},
           {"worst_tets", worst}};
+  if (report.quadratic)
+    json["quadratic"] = {{"min_scaled_jacobian", json_distribution(report.quadratic->min_scaled_jacobian)},
+                         {"nonpositive_jacobian_tets", report.quadratic->nonpositive_jacobian_tets},
+                         {"curved_tets", report.quadratic->curved_tets}};
+  return json;
 }
 
 }  // namespace meshprep

@@ -151,6 +151,7 @@ std::string serialise(const TetMesh& m) {
   put_vector(out, m.tet_regions);
   put_vector(out, m.boundary_faces);
   put_vector(out, m.boundary_tags);
+  put_vector(out, m.tet_edge_nodes);  // empty: TetGen runs without -o2, but the message carries a whole TetMesh
   return out;
 }
 
@@ -163,6 +164,7 @@ TetMesh deserialise(Reader& in) {
   m.tet_regions = in.get_vector<int>();
   m.boundary_faces = in.get_vector<Triangle>();
   m.boundary_tags = in.get_vector<int>();
+  m.tet_edge_nodes = in.get_vector<TetEdgeNodes>();
   return m;
 }
 

@@ -12,8 +12,25 @@
 namespace meshprep::detail {
 namespace {
 
-constexpr int vtk_triangle = 5;
-constexpr int vtk_tetra = 10;
+// The cells read: linear and quadratic triangles and tets. A quadratic cell lists its corners,
+// then its mid-edge nodes: VTK_QUADRATIC_TRIANGLE (22) those of (0,1) (1,2) (2,0),
+// VTK_QUADRATIC_TETRA (24) those of (0,1) (1,2) (2,0) (0,3) (1,3) (2,3), kTetEdges' order
+// (vtkQuadraticTriangle's and vtkQuadraticTetra's documentation).
+struct ReadCell {
+  int id;
+  std::size_t points;
+  bool tet;
+  const char* name;
+};
+
+constexpr ReadCell read_cells[] = {
+    {5, 3, false, "triangle"}, {22, 6, false, "quadratic triangle"}, {10, 4, true, "tetrahedron"}, {24, 10, true, "quadratic tetrahedron"}};
+
+const ReadCell* find_read_cell(double id) {
+  for (const ReadCell& cell : read_cells)
+    if (cell.id == id) return &cell;
+  return nullptr;
+}
 
 struct CellType {
   int id;
@@ -144,22 +161,22 @@ void add_vtk_cells(TetFileContent& content, const VtkCells& cells, std::size_t f
                      std::to_string(begin) + " and the connectivity's size " + std::to_string(cells.connectivity.size()));
     const auto end = static_cast<std::size_t>(end_value);
     const double type = cells.types[c];
-    if (type != vtk_tetra && type != vtk_triangle) {
+    const ReadCell* cell = find_read_cell(type);
+    if (!cell) {
       const CellType* known = find_cell_type(type);
       if (!known) fail(name, "cell " + std::to_string(c) + " has type " + number_text(type) + ", unknown to this reader");
       if (known->dimension == 3)
         fail(name, "cell " + std::to_string(c) + " is a " + known->name + " (type " + std::to_string(known->id) +
-                       "); meshprep reads linear tetrahedra (type 10) only");
+                       "); meshprep reads tetrahedra of 4 and 10 nodes (types 10, 24) only");
       ++content.elements_ignored;
       begin = end;
       continue;
     }
-    const std::size_t corners = type == vtk_tetra ? 4 : 3;
-    if (end - begin != corners)
-      fail(name, "cell " + std::to_string(c) + " is a " + (corners == 4 ? "tetrahedron" : "triangle") + " with " +
-                     std::to_string(end - begin) + " points, not " + std::to_string(corners));
-    std::uint32_t ids[4] = {0, 0, 0, 0};
-    for (std::size_t k = 0; k < corners; ++k) {
+    if (end - begin != cell->points)
+      fail(name, "cell " + std::to_string(c) + " is a " + cell->name + " with " + std::to_string(end - begin) +
+                     " points, not " + std::to_string(cell->points));
+    std::uint32_t ids[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (std::size_t k = 0; k < cell->points; ++k) {
       const double id = cells.connectivity[begin + k];
       if (!is_index(id, num_points))
         fail(name, "cell " + std::to_string(c) + " references point " + number_text(id) + ", but the points are " +
@@ -169,12 +186,14 @@ void add_vtk_cells(TetFileContent& content, const VtkCells& cells, std::size_t f
     std::optional<int> region = 0;
     if (!cells.regions.empty() && !(region = integral_tag(cells.regions[c])))
       fail(name, "cell " + std::to_string(c) + " has region " + number_text(cells.regions[c]) + ", not an integer");
-    if (corners == 4) {
+    if (cell->tet) {
       content.tets.push_back({ids[0], ids[1], ids[2], ids[3]});
       content.tet_regions.push_back(*region);
+      if (cell->points == 10) content.tet_edge_nodes.push_back({ids[4], ids[5], ids[6], ids[7], ids[8], ids[9]});
     } else {
       content.triangles.push_back({ids[0], ids[1], ids[2]});
       content.triangle_tags.push_back(*region);
+      if (cell->points == 6) content.triangle_edge_nodes.push_back({ids[3], ids[4], ids[5]});
     }
     begin = end;
   }

@@ -30,7 +30,8 @@ struct VtkCells {
   std::vector<double> types, offsets, connectivity, regions;
 };
 
-/// Adds the tetrahedra (cell type 10) and triangles (5) of `cells` to `content`, their point ids
+/// Adds the tetrahedra (cell type 10, or 24 with mid-edge nodes) and triangles (5, or 22) of
+/// `cells` to `content`, their point ids
 /// shifted by `first_point` (the points of the earlier pieces); lower-dimensional cells are counted
 /// in elements_ignored; other volume cells and unknown types are refused.
 /// \throws InvalidInput naming `name` for inconsistent arrays, an id out of [0, num_points) or

@@ -310,6 +310,7 @@ std::vector<Key> tetrahedralize_keys(PipelineConfig::Tetrahedralize& t) {
   keys.push_back(number("tetrahedralize",
                         {"extrude_base_relative", "", "the same depth / bounding-box diagonal", {0, 100, true, false}},
                         t.extrude_base_relative));
+  keys.push_back(count("tetrahedralize", element_order_parameters().order, t.element_order.order));
   keys.push_back(choice<std::string>("tetrahedralize", "format", t.format,
                                      {{"msh", "msh"}, {"vtu", "vtu"}, {"mesh", "mesh"}, {"inp", "inp"}, {"node", "node"}, {"xdmf", "xdmf"}},
                                      "the tet mesh file tets.FORMAT: Gmsh, VTK XML, Medit, Abaqus/CalculiX, TetGen, XDMF + HDF5 (dolfinx)"));

@@ -78,6 +78,13 @@ Json patches_json(const PipelineResult& result) {
 
 }  // namespace
 
+Json to_json(const SecondOrderRecord& record) {
+  Json json = {{"hausdorff_linear_relative", record.hausdorff_linear_relative},
+               {"hausdorff_second_order_relative", record.hausdorff_second_order_relative}};
+  json.update(to_json(record.quadratic));
+  return json;
+}
+
 Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config) {
   Json json;
   json["meshprep_version"] = MESHPREP_VERSION;
@@ -102,6 +109,8 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   // TetGen's own tets beside the final ones, and what the improvement did and found the surface forbids.
   tets["tetgen_quality"] = result.tetgen_quality ? to_json(*result.tetgen_quality) : Json(nullptr);
   tets["improvement"] = result.improvement ? to_json(*result.improvement) : Json(nullptr);
+  tets["order"] = config.tetrahedralize.element_order.order;
+  tets["second_order"] = result.second_order ? to_json(*result.second_order) : Json(nullptr);
   json["tets"] = tets;
   json["time_seconds"] = result.seconds;
   return json;

@@ -376,6 +376,10 @@ void check_improve_params(const ImproveParams& p) {
 
 ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   check_improve_params(params);
+  // Every move here is a move of linear tets; a second-order mesh is made after the improvement.
+  if (mesh.quadratic())
+    throw InvalidInput("improve: the mesh is second-order (10-node tets); the improvement works on linear tets: "
+                       "improve the linear mesh, then make it second-order (--order 2)");
   const Clock::time_point start = Clock::now();
   ImproveResult result;
   analyze_tet_quality(mesh);  // checks indices and the region count (throws InvalidInput)

@@ -396,6 +396,7 @@ TetMesh TetComplex::to_mesh(const TetMesh& original) const {
   mesh.boundary_tags = original.boundary_tags;
   mesh.boundary_names = original.boundary_names;
   mesh.region_names = original.region_names;
+  // tet_edge_nodes stays empty: improve_tets refuses second-order meshes, so `original` has none.
   return mesh;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 /// \file fem_parameters.h
-/// The user-facing fields of TetParams, ImproveParams and TetThresholds as the command line and
-/// the configuration file name them (core/parameter.h): keys, flags, ranges and meanings. The
-/// defaults are those structs' own.
+/// The user-facing fields of TetParams, ImproveParams, TetThresholds and ElementOrderParams as the
+/// command line and the configuration file name them (core/parameter.h): keys, flags, ranges and
+/// meanings. The defaults are those structs' own.
 
 #include "meshprep/core/parameter.h"
 
@@ -17,6 +17,11 @@ struct ImproveParameters {
   ParameterInfo goal_min_dihedral_deg, goal_max_dihedral_deg, insertion, max_passes, time_limit_seconds;
 };
 const ImproveParameters& improve_parameters();
+
+struct ElementOrderParameters {
+  ParameterInfo order;
+};
+const ElementOrderParameters& element_order_parameters();
 
 struct VerdictParameters {
   ParameterInfo min_dihedral_deg, max_dihedral_deg, max_inverted_tets;

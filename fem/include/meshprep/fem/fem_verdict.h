@@ -26,7 +26,8 @@ struct TetThresholds {
   double min_dihedral_deg = 10;
   /// The largest dihedral angle allowed, degrees, in [0, 180] (180: any).
   double max_dihedral_deg = 165;
-  /// How many inverted or flat tets (volume <= 0) are allowed: none.
+  /// How many inverted or flat tets (volume <= 0) are allowed: none. For a second-order mesh, the
+  /// tets with det J <= 0 at one of their ten nodes count too (QuadraticTetQuality).
   std::size_t max_inverted_tets = 0;
 };
 

@@ -92,7 +92,8 @@ void check_improve_params(const ImproveParams& params);
 
 /// Improves `mesh` in place (its points keep their indices; new points are appended; tets are
 /// renumbered). \pre every tet positively oriented (TetGen's and the readers' are).
-/// \throws InvalidInput for a malformed mesh (indices, region count, a face shared by three tets,
+/// \throws InvalidInput for a second-order mesh (TetMesh::tet_edge_nodes: the moves are those of
+///         linear tets; make the mesh second-order after improving it), a malformed mesh (indices, region count, a face shared by three tets,
 ///         tets that overlap) or parameters out of range; Cancelled when params.cancelled said so
 ///         (the mesh is then unchanged).
 ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params = {});

@@ -13,6 +13,7 @@
 #include "meshprep/quality/statistics.h"
 
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 namespace meshprep {
@@ -52,6 +53,21 @@ struct WorstTet {
   TetShape shape;
 };
 
+/// The quality of a second-order mesh's tets (TetMesh::tet_edge_nodes), beyond that of their
+/// corner tets (which the rest of TetQualityReport describes).
+struct QuadraticTetQuality {
+  /// Per tet, the smallest scaled Jacobian over its ten nodes: at each node and for each corner c,
+  /// sqrt(2) det(d1, d2, d3) / (|d1| |d2| |d3|), d the derivatives of the tet's map along the three
+  /// reference edges from c. 1 for the regular straight tet; for a straight tet Verdict's scaled
+  /// Jacobian (TetShape); <= 0 where the map folds.
+  Distribution min_scaled_jacobian{};
+  /// Tets with det J <= 0 at one of their ten nodes, or whose corner tet is (volume <= 0).
+  std::size_t nonpositive_jacobian_tets = 0;
+  /// Tets with a mid-edge node off its edge's midpoint (by more than 1e-9 of the edge's length).
+  std::size_t curved_tets = 0;
+  std::vector<double> min_scaled_jacobian_per_tet;  ///< for histograms
+};
+
 /// How many worst tets analyze_tet_quality lists by default.
 constexpr std::size_t kDefaultWorstTets = 10;
 
@@ -70,17 +86,22 @@ struct TetQualityReport {
   std::vector<double> aspect_ratio_per_tet;     ///< for histograms
   /// The tets with the smallest dihedral angles, smallest first (ties: lower index first).
   std::vector<WorstTet> worst_tets;
+  /// Second-order meshes only; the dihedral angles and the other figures above are those of the
+  /// corner tets.
+  std::optional<QuadraticTetQuality> quadratic;
 };
 
 /// Distributions ignore non-finite values (the radius-edge and aspect ratios of flat tets).
 /// \param worst_tets how many of the worst tets to list (all when the mesh has fewer).
-/// \throws InvalidInput if tet_regions' size differs from tets' or a tet references a missing point.
+/// \throws InvalidInput if tet_regions' (or a second-order mesh's tet_edge_nodes') size differs
+///         from tets' or a tet references a missing point.
 TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tets = kDefaultWorstTets);
 
 /// JSON keys: points, tetrahedra, volume, inverted_tets, min_dihedral_deg {min,mean,p5,p50,p95,max},
 /// max_dihedral_deg {...}, radius_edge_ratio {...}, tets_min_dihedral_below_10, tets_per_region {"1": n},
 /// scaled_jacobian {...}, aspect_ratio {...}, worst_tets [{index, region, centre [x,y,z],
-/// min_dihedral_deg, max_dihedral_deg, radius_edge_ratio, scaled_jacobian, aspect_ratio}].
+/// min_dihedral_deg, max_dihedral_deg, radius_edge_ratio, scaled_jacobian, aspect_ratio}]; for a
+/// second-order mesh also quadratic {min_scaled_jacobian {...}, nonpositive_jacobian_tets, curved_tets}.
 nlohmann::ordered_json to_json(const TetQualityReport& report);
 
 }  // namespace meshprep

@@ -14,6 +14,7 @@
 #include "meshprep/core/mesh.h"
 #include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/improve_tets.h"
+#include "meshprep/fem/quadratic.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/tet_mesh.h"
 #include "meshprep/fem/tet_quality.h"
@@ -55,6 +56,18 @@ struct FemVerdict {
   std::vector<ThresholdCheck> checks;
 };
 
+/// What making the final tets second-order did (tetrahedralize.order 2), and the boundary's
+/// Hausdorff distance to input_surface before (the linear boundary) and after (the curved one,
+/// sampled), over input_surface's bounding-box diagonal.
+struct SecondOrderRecord {
+  QuadraticResult quadratic;
+  double hausdorff_linear_relative = 0;
+  double hausdorff_second_order_relative = 0;
+};
+
+/// {"hausdorff_linear_relative", "hausdorff_second_order_relative", then quadratic.h's figures}.
+nlohmann::ordered_json to_json(const SecondOrderRecord& record);
+
 struct PipelineResult {
   std::string input;             ///< the input path
   bool from_points = false;      ///< the input was a point set
@@ -68,6 +81,7 @@ struct PipelineResult {
   std::optional<TetQualityReport> tet_quality;  ///< of the final tets (improved, when the stage ran)
   std::optional<TetQualityReport> tetgen_quality;  ///< of TetGen's own tets, when the improvement changed them
   std::optional<ImproveResult> improvement;  ///< of `tets`: what the verdict judges
+  std::optional<SecondOrderRecord> second_order;  ///< tetrahedralize.order 2: the tets made second-order
   std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)
   std::optional<double> extrusion_depth;  ///< an open surface closed into a block: its base's depth
   std::string tetgen_switches;

@@ -13,6 +13,7 @@
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/improve_tets.h"
+#include "meshprep/fem/quadratic.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/preprocess/patches/patches.h"
@@ -118,6 +119,9 @@ struct PipelineConfig {
     /// at 10 %), an extruded block's are split (its walls are long thin triangles: kept, 11 % of
     /// the terrain's tets fall under 10 degrees).
     std::optional<bool> keep_surface;
+    /// 2: the final tets (after the improvement) made second-order, their boundary's nodes on the
+    /// input surface (make_quadratic).
+    ElementOrderParams element_order;
     std::string format = "msh";  ///< msh, vtu, mesh, inp, node or xdmf: the file tets.<format>
     TetExportOptions export_options;
   } tetrahedralize;
