@@ -13,10 +13,12 @@
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/import.h"
+#include "meshprep/fem/tet_boundary.h"
 
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <vector>
 
 namespace meshprep::cli {
@@ -62,7 +64,44 @@ std::optional<QuadraticResult> change_order(const ConvertOptions& o, TetMesh& me
   return make_second_order(mesh, reference ? &*reference : nullptr, counts);
 }
 
+// --binary for a surface format that is text only (OFF, OBJ), refused before any work; --ascii
+// asks what every surface writer does unless --binary.
+void check_surface_encoding(const ConvertOptions& o) {
+  const std::string extension = extension_of(o.output);
+  if (o.encoding.binary && (extension == "off" || extension == "obj"))
+    throw InvalidInput(o.output + ": cannot write " + (extension == "off" ? "OFF" : "OBJ") +
+                       " binary: it is a text format (binary: .ply .stl)");
+}
+
+bool is_surface_path(const std::string& path) {
+  const std::string extension = extension_of(path);
+  return extension == "off" || extension == "obj" || extension == "ply" || extension == "stl";
+}
+
+// A tet mesh's boundary surface (its corner faces), with its tags as patches where the format holds
+// them (OBJ groups, PLY's patch property, ASCII STL's solids; not OFF or binary STL).
+int extract_boundary(const ConvertOptions& o) {
+  ensure_distinct_files({o.input}, {o.output, o.json});
+  if (o.order) throw InvalidInput("convert: --order applies to tet outputs, not to the surface " + o.output);
+  check_surface_encoding(o);
+  TetReadReport read;
+  const TetMesh mesh = read_tet_mesh(o.input, &read);
+  note_read_changes(read);
+  const TriangleSoup boundary = boundary_surface(mesh);
+  WriteOptions options;
+  options.binary = o.encoding.binary;
+  write_naming_both(o, [&] { write_soup(boundary, o.output, options); });
+  std::set<int> patches(boundary.patches.begin(), boundary.patches.end());
+  report(o, {{"kind", "boundary"}, {"vertices", boundary.points.size()}, {"triangles", boundary.triangles.size()},
+             {"patches", patches.size()}},
+         "the boundary of " + std::to_string(mesh.tets.size()) + " tets: " + std::to_string(boundary.points.size()) +
+             " vertices, " + std::to_string(boundary.triangles.size()) + " triangles, " + std::to_string(patches.size()) +
+             (patches.size() == 1 ? " patch" : " patches"));
+  return kSuccess;
+}
+
 int convert_tet_mesh(const ConvertOptions& o) {
+  if (is_surface_path(o.output)) return extract_boundary(o);
   ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
   TetExportOptions options;  // checked before the input is read: binary .inp is bad usage, whatever the input
   write_naming_both(o, [&] { options = tet_export_options(o.output, "", o.msh_version, o.encoding); });
@@ -84,15 +123,6 @@ int convert_tet_mesh(const ConvertOptions& o) {
   if (second_order) line += "\n  second order: " + second_order_summary(*second_order);
   report(o, counts, line);
   return kSuccess;
-}
-
-// --binary for a surface format that is text only (OFF, OBJ), refused before any work; --ascii
-// asks what every surface writer does unless --binary.
-void check_surface_encoding(const ConvertOptions& o) {
-  const std::string extension = extension_of(o.output);
-  if (o.encoding.binary && (extension == "off" || extension == "obj"))
-    throw InvalidInput(o.output + ": cannot write " + (extension == "off" ? "OFF" : "OBJ") +
-                       " binary: it is a text format (binary: .ply .stl)");
 }
 
 int convert_surface(const ConvertOptions& o) {
@@ -117,9 +147,10 @@ Action add_convert_command(CLI::App& app) {
   auto o = std::make_shared<ConvertOptions>();
   CLI::App* cmd = app.add_subcommand("convert",
                                      "Convert a surface mesh between OFF, OBJ, PLY and STL, or a tet mesh from .msh .vtu .vtk "
-                                     ".mesh .node .xdmf to those and .inp (format from the extension)");
+                                     ".mesh .node .xdmf to those and .inp, or to its boundary surface (.off .obj .ply .stl, "
+                                     "with its patches where the format holds them) (format from the extension)");
   cmd->add_option("input", o->input, "Input surface or tet mesh (a TetGen mesh by its .node or .ele)")->required();
-  auto* output = cmd->add_option("-o,--output", o->output, "Output mesh of the same kind");
+  auto* output = cmd->add_option("-o,--output", o->output, "Output mesh of the same kind, or a tet mesh's boundary surface");
   cmd->add_option("output", o->output, "The output, as the second argument instead of -o")->excludes(output);
   add_encoding_options(*cmd, o->encoding,
                        "Binary PLY, STL or .msh instead of ASCII (.vtu is binary unless --ascii, .xdmf always)");

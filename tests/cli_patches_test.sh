@@ -129,5 +129,37 @@ assert len(rows) == 10, len(rows)
 for r in rows: assert abs(r["area_change_percent"]) < 0.5, r
 PY
 
+# improve and convert keep the names they read, through every format that holds names.
+names_of() { "$bin" quality "$1" --json - 2> err.txt | "$py" -c "import json, sys; print(' '.join(sorted(json.load(sys.stdin)['boundary']['faces_per_patch'])))"; }
+"$bin" tetrahedralize bar.obj -o bar.msh --no-improve > /dev/null 2> err.txt
+expect_exit "tetrahedralize bar.obj --no-improve (its slivers left: written, not ready)" 1 $?
+"$bin" improve bar.msh -o bar_improved.msh > /dev/null 2> err.txt
+expect_exit "improve bar.msh" 0 $?
+[ "$(names_of bar_improved.msh)" = "fixed_end load walls" ] && ok || bad "improve dropped names: $(names_of bar_improved.msh)"
+previous=bar_improved.msh
+for ext in xdmf vtu msh; do
+  "$bin" convert $previous -o bar_converted.$ext > /dev/null 2> err.txt
+  expect_exit "convert $previous -> .$ext" 0 $?
+  [ "$(names_of bar_converted.$ext)" = "fixed_end load walls" ] && ok || bad "convert to .$ext dropped names: $(names_of bar_converted.$ext)"
+  previous=bar_converted.$ext
+done
+
+# A tet mesh's boundary surface, with its patches where the format holds them.
+for ext in obj ply stl; do
+  "$bin" convert bar_converted.msh -o bar_boundary.$ext --json boundary.json > /dev/null 2> err.txt
+  expect_exit "convert bar_converted.msh -> boundary .$ext" 0 $?
+  "$bin" patches bar_boundary.$ext --json table.json > /dev/null 2> err.txt
+  "$py" -c "
+import json; t = json.load(open('table.json')); b = json.load(open('boundary.json'))
+assert sorted(r['name'] for r in t['table']) == ['fixed_end', 'load', 'walls'], t['table']
+assert b['kind'] == 'boundary' and b['patches'] == 3 and b['triangles'] == sum(r['faces'] for r in t['table']), b
+assert abs(sum(r['area'] for r in t['table']) - 18) < 1e-9, t['table']  # the 4 x 1 x 1 bar's surface" &&
+    ok || bad "bar_boundary.$ext: its patches $(cat table.json | head -c 300)"
+done
+"$bin" convert bar_converted.msh -o bar_boundary.off --order 2 > /dev/null 2> err.txt
+expect_exit "convert to a surface with --order" 2 $?
+one_line "convert to a surface with --order" "applies to tet outputs, not to the surface"
+[ ! -e bar_boundary.off ] && ok || bad "a refused convert wrote bar_boundary.off"
+
 echo "cli_patches: $passed passed, $failed failed"
 [ "$failed" = 0 ]
