@@ -1,5 +1,5 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
-//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2] [--binary | --ascii]
+//   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2] [--binary | --ascii] [--order 1|2]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
@@ -7,6 +7,7 @@
 #include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
+#include "tet_second_order.h"
 
 #include "meshprep/core/errors.h"
 #include "meshprep/pipeline/pipeline.h"
@@ -33,6 +34,8 @@ struct PipelineOptions {
   std::string input, outdir, config, json, format, msh_version, fail_on;
   ThresholdFlags thresholds;
   ImproveFlags improve;
+  ElementOrderParams element_order;         ///< --order, over the configuration file's when given
+  const CLI::Option* order_flag = nullptr;  ///< whether --order was given
   PatchParams patch_edits;  ///< --rename and --merge, after the configuration file's
   EncodingFlags encoding;
   double ratio = 0, extrude_base = 0;
@@ -59,6 +62,7 @@ PipelineConfig effective_config(const PipelineOptions& o) {
     config.tetrahedralize.export_options.binary = o.encoding.binary;
     config.tetrahedralize.export_options.ascii = o.encoding.ascii;
   }
+  if (o.order_flag != nullptr && o.order_flag->count() > 0) config.tetrahedralize.element_order = o.element_order;
   config.verdict = o.thresholds.applied_to(config.verdict);
   config.improve.params = o.improve.applied_to(config.improve.params);
   if (o.improve.off) config.improve.enabled = false;
@@ -245,6 +249,7 @@ Action add_pipeline_command(CLI::App& app) {
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")
       ->check(CLI::IsMember({"4.1", "2.2"}));
   add_encoding_options(*cmd, o->encoding, "Binary msh (vtu is binary unless --ascii, xdmf always)");
+  o->order_flag = add_order_option(*cmd, o->element_order);
   add_patch_edits(*cmd, o->patch_edits);
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/true);
   add_threshold_options(*cmd, o->thresholds);
