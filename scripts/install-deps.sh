@@ -15,6 +15,8 @@ packages=(
   ccache  # the builds of scripts/build.sh and run-tests.sh reuse what an earlier build compiled
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy
+  # tests/python/test_cad_formats.py: Gmsh's own Python API and VTK's readers read them back too
+  python3-gmsh python3-vtk9
   # tests/python/test_xdmf_dolfinx.py (pytest): dolfinx reads our .xdmf and solves on it, h5py
   # reads its HDF5 data
   python3-pytest python3-dolfinx python3-h5py
