@@ -8,8 +8,9 @@
 #include "meshprep/quality/face_edges.h"
 
 #include <algorithm>
-#include <map>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace meshprep::detail {
 namespace {
@@ -93,7 +94,9 @@ SurfaceConstraints::SurfaceConstraints(TriMesh& mesh, const TriangleSoup& refere
 void SurfaceConstraints::follow_reference_borders(const TriangleSoup& reference) {
   const FacePatches patches(mesh_);
   if (!patches.present() || reference.patches.size() != reference.triangles.size()) return;
-  const auto pair_key = [](int p, int q) { return std::minmax(p, q); };
+  // By value: std::minmax returns references, here to the lambda's own parameters, which are gone
+  // when the key is read (at -O3 the map got garbage keys and the lines far-away segments).
+  const auto pair_key = [](int p, int q) { return std::pair<int, int>(std::min(p, q), std::max(p, q)); };
   std::map<std::pair<int, int>, std::vector<Segment>> borders;
   const std::vector<FaceEdge> uses = sorted_face_edges(reference);
   for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
