@@ -73,11 +73,6 @@ void check_surface_encoding(const ConvertOptions& o) {
                        " binary: it is a text format (binary: .ply .stl)");
 }
 
-bool is_surface_path(const std::string& path) {
-  const std::string extension = extension_of(path);
-  return extension == "off" || extension == "obj" || extension == "ply" || extension == "stl";
-}
-
 // A tet mesh's boundary surface (its corner faces), with its tags as patches where the format holds
 // them (OBJ groups, PLY's patch property, ASCII STL's solids; not OFF or binary STL).
 int extract_boundary(const ConvertOptions& o) {
@@ -101,7 +96,7 @@ int extract_boundary(const ConvertOptions& o) {
 }
 
 int convert_tet_mesh(const ConvertOptions& o) {
-  if (is_surface_path(o.output)) return extract_boundary(o);
+  if (is_surface_mesh_path(o.output)) return extract_boundary(o);
   ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
   TetExportOptions options;  // checked before the input is read: binary .inp is bad usage, whatever the input
   write_naming_both(o, [&] { options = tet_export_options(o.output, "", o.msh_version, o.encoding); });

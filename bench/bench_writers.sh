@@ -9,4 +9,6 @@ femur=$root/../shared/data/meshes/femur.off
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$build/bin/meshprep" tetrahedralize "$femur" -o "$work/femur.msh" --no-improve > /dev/null 2>&1 || [ $? = 1 ]  # 1: written, not FEM-ready
-"$build/bin/bench_writers" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true "$work/femur.msh"
+# Repetitions in random order, so that the machine's drift falls on every format alike.
+"$build/bin/bench_writers" --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true \
+  --benchmark_report_aggregates_only=true "$work/femur.msh"

@@ -101,7 +101,7 @@ TEST_F(FemExportTest, ThirdPartyReadersReadEveryFormat) {
 
 // The values of a VTK cell array named `name` (.vtu DataArray or legacy SCALARS), `count` of them.
 std::vector<double> vtk_cell_array(const std::string& content, const std::string& name, std::size_t count) {
-  const std::string xml = "Name=\"" + name + "\" format=\"ascii\">\n", legacy = "SCALARS " + name + " double 1\nLOOKUP_TABLE default\n";
+  const std::string xml = "Name=\"" + name + "\" format=\"ascii\">\n", legacy = "SCALARS " + name + " float 1\nLOOKUP_TABLE default\n";
   std::size_t at = content.find(xml);
   at = at != std::string::npos ? at + xml.size() : content.find(legacy);
   if (at == std::string::npos) return {};
@@ -131,11 +131,15 @@ TEST_F(FemExportTest, VtkFilesCarryEachTetsQualityInAFormVtkParses) {
     ASSERT_EQ(max_dihedral.size(), 7u) << name;
     ASSERT_EQ(radius_edge.size(), 7u) << name;
     ASSERT_EQ(jacobian.size(), 7u) << name;
+    // The files hold Float32: each value rounded to 24 significant bits, off by at most 2^-24 of
+    // itself (plus atan2's round-off on the angles).
+    const auto float32 = [](double value) { return std::ldexp(std::abs(value), -24) + 1e-12; };
     for (std::size_t t = 0; t < 6; ++t) {
-      EXPECT_NEAR(min_dihedral[t], 45.0, 1e-10) << name;  // degrees: atan2 round-off
-      EXPECT_NEAR(max_dihedral[t], 90.0, 1e-10) << name;
-      EXPECT_NEAR(radius_edge[t], std::sqrt(3.0) / 2.0, 1e-12) << name;
-      EXPECT_NEAR(jacobian[t], 1.0 / std::sqrt(3.0), 1e-12) << name;
+      EXPECT_NEAR(min_dihedral[t], 45.0, float32(45.0)) << name;
+      EXPECT_NEAR(max_dihedral[t], 90.0, float32(90.0)) << name;
+      EXPECT_NEAR(radius_edge[t], std::sqrt(3.0) / 2.0, float32(std::sqrt(3.0) / 2.0)) << name;
+      EXPECT_NEAR(jacobian[t], 1.0 / std::sqrt(3.0), float32(1.0 / std::sqrt(3.0))) << name;
+      EXPECT_NE(radius_edge[t], std::sqrt(3.0) / 2.0) << name;  // Float32 indeed: the double's digits are not there
     }
     EXPECT_EQ(radius_edge[6], 1e30) << name;
     EXPECT_EQ(jacobian[6], 0.0) << name;

@@ -9,7 +9,7 @@ oriented and a total signed volume equal to VOLUME (relative tolerance 1e-9). .v
 must carry the cell data "region" and the per-tet quality min_dihedral_deg, max_dihedral_deg,
 radius_edge_ratio and scaled_jacobian, equal to the values computed here independently (dihedral
 angles from the two faces' directions normal to each edge, the circumcentre from its linear system,
-Verdict's scaled Jacobian from each corner's edges). .msh files are also checked by Gmsh itself (`gmsh FILE -check`): exit code 0, no warning or error, and the node and
+Verdict's scaled Jacobian from each corner's edges), to the Float32 rounding the files hold them in. .msh files are also checked by Gmsh itself (`gmsh FILE -check`): exit code 0, no warning or error, and the node and
 element counts it prints must match. An .xdmf's tag grids must hold one tag per cell. .ele and .face files are covered by their .node file.
 A .vtu's boundary-faces file X_boundary.vtu (beside X.vtu) must hold triangles only, each an outward
 face of one tet of X.vtu, on the points of X.vtu that its point data "mesh_point_id"
@@ -47,6 +47,9 @@ QUALITY_ARRAYS = ("min_dihedral_deg", "max_dihedral_deg", "radius_edge_ratio", "
 # Differences of the two computations' round-off (their inputs are the same doubles): angles to
 # 1e-9 degree, ratios to 1e-9 relative (the circumcentre's 3x3 solve is the least accurate part).
 QUALITY_TOLERANCE = 1e-9
+# The files hold the quality as Float32: rounded to nearest, each value is off by at most half a
+# unit in its last place, 2^-24 of the value (IEEE 754 binary32 has 24 significant bits).
+FLOAT32_ROUNDING = 2.0 ** -24
 
 
 class Failure(Exception):
@@ -98,9 +101,10 @@ def check_cell_quality(mesh, points, tets):
         # meshio gives legacy VTK scalars as (n, 1) columns, XML arrays as (n,).
         written = np.concatenate([np.asarray(block, dtype=float).reshape(-1) for block in mesh.cell_data[name]])
         scale = 1.0 if name.endswith("_deg") or name == "scaled_jacobian" else np.abs(expected[name])
-        worst = np.max(np.abs(written - expected[name]) / np.maximum(scale, 1e-300))
-        if not worst <= QUALITY_TOLERANCE:
-            raise Failure(f"cell data '{name}' differs from the tets' own by {worst:.3g}")
+        allowed = QUALITY_TOLERANCE * scale + FLOAT32_ROUNDING * np.abs(expected[name])
+        worst = np.max(np.abs(written - expected[name]) / np.maximum(allowed, 1e-300))
+        if not worst <= 1:
+            raise Failure(f"cell data '{name}' differs from the tets' own by {worst:.3g} times the tolerance")
 
 
 XINCLUDE = "{http://www.w3.org/2001/XInclude}include"

@@ -1,4 +1,5 @@
-// Format dispatch by extension: read_soup (and parse_soup, from memory), load_mesh, write_mesh, extension_of;
+// Format dispatch by extension: read_soup (and parse_soup, from memory), load_mesh, write_mesh, extension_of,
+// is_surface_mesh_path;
 // require_all_faces.
 #include "meshprep/core/io.h"
 
@@ -12,11 +13,23 @@
 namespace meshprep {
 namespace {
 
+struct SurfaceFormat {
+  const char* extension;
+  detail::SoupReader reader;
+};
+
+// The surface formats, each read by its reader (readers.h).
+constexpr SurfaceFormat kSurfaceFormats[] = {
+    {"off", &detail::read_off}, {"obj", &detail::read_obj}, {"ply", &detail::read_ply}, {"stl", &detail::read_stl}};
+
+const SurfaceFormat* surface_format(const std::string& extension) {
+  for (const SurfaceFormat& format : kSurfaceFormats)
+    if (extension == format.extension) return &format;
+  return nullptr;
+}
+
 detail::SoupReader reader_for(const std::string& path, const std::string& extension) {
-  if (extension == "off") return &detail::read_off;
-  if (extension == "obj") return &detail::read_obj;
-  if (extension == "ply") return &detail::read_ply;
-  if (extension == "stl") return &detail::read_stl;
+  if (const SurfaceFormat* format = surface_format(extension)) return format->reader;
   detail::fail(path, detail::unknown_extension_problem(extension));
 }
 
@@ -72,6 +85,8 @@ std::string extension_of(const std::string& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension;
 }
+
+bool is_surface_mesh_path(const std::string& path) { return surface_format(extension_of(path)) != nullptr; }
 
 TriangleSoup detail::parse_soup(const std::string& path, std::string_view data, ReadReport* report) {
   return parse_with(reader_for(path, extension_of(path)), path, data, report);

@@ -42,9 +42,8 @@ PointSet detail::parse_points(const std::string& path, std::string_view data) {
 }
 
 PointSet read_points(const std::string& path) {
-  const std::string extension = extension_of(path);
-  if (extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
-    detail::fail(path, "a surface mesh (." + extension + "), not a point set (.xyz: x y z per line)");
+  if (is_surface_mesh_path(path))
+    detail::fail(path, "a surface mesh (." + extension_of(path) + "), not a point set (.xyz: x y z per line)");
   return detail::parse_points(path, read_input_file(path));
 }
 

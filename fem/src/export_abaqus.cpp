@@ -34,6 +34,7 @@
 // on what `gmsh -3 -order 2` writes to .inp. Its faces are numbered as C3D4's, so the surfaces
 // are written alike.
 #include "exporters.h"
+#include "text_buffer.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
@@ -48,6 +49,7 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -72,18 +74,27 @@ Triangle canonical(const Triangle& t) {
 }
 
 // For each (outward) boundary face, the tet having it as an outward face and the face's number.
+// The boundary faces are sorted by their canonical rotation and looked up by binary search; a tet
+// face with a corner off the boundary (most of them) is not looked up at all.
 std::vector<FaceOwner> face_owners(const TetMesh& mesh, const std::string& path) {
-  std::multimap<Triangle, std::size_t> boundary;
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) boundary.emplace(canonical(mesh.boundary_faces[f]), f);
+  std::vector<std::pair<Triangle, std::size_t>> boundary(mesh.boundary_faces.size());
+  std::vector<bool> on_boundary(mesh.points.size(), false);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    boundary[f] = {canonical(mesh.boundary_faces[f]), f};
+    for (const std::uint32_t v : mesh.boundary_faces[f]) on_boundary[v] = true;
+  }
+  std::sort(boundary.begin(), boundary.end());
   constexpr FaceOwner none{0, 0};
   std::vector<FaceOwner> owners(mesh.boundary_faces.size(), none);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t)
     for (int k = 0; k < 4; ++k) {
       const auto& local = c3d4_faces[k];
       const Tetrahedron& tet = mesh.tets[t];
+      if (!on_boundary[tet[local[0]]] || !on_boundary[tet[local[1]]] || !on_boundary[tet[local[2]]]) continue;
       // Reversed: the outward orientation of a face listed inward.
-      const auto range = boundary.equal_range(canonical({tet[local[0]], tet[local[2]], tet[local[1]]}));
-      for (auto it = range.first; it != range.second; ++it)
+      const Triangle key = canonical({tet[local[0]], tet[local[2]], tet[local[1]]});
+      auto it = std::lower_bound(boundary.begin(), boundary.end(), std::make_pair(key, std::size_t{0}));
+      for (; it != boundary.end() && it->first == key; ++it)
         if (owners[it->second].face == none.face) owners[it->second] = {t, k + 1};
     }
   for (std::size_t f = 0; f < owners.size(); ++f)
@@ -100,7 +111,7 @@ std::map<int, std::vector<std::size_t>> group_by_tag(const std::vector<int>& tag
 }
 
 // Comma-separated, at most max_entries_per_line per line.
-void write_id_list(std::ostream& out, const std::vector<std::size_t>& ids) {
+void write_id_list(TextBuffer& out, const std::vector<std::size_t>& ids) {
   for (std::size_t i = 0; i < ids.size(); ++i) {
     out << ids[i];
     const bool line_end = (i + 1) % max_entries_per_line == 0 || i + 1 == ids.size();
@@ -110,7 +121,7 @@ void write_id_list(std::ostream& out, const std::vector<std::size_t>& ids) {
 
 // `value` in at most max_field_length characters: the shortest round-trip form if it fits, else
 // the general form with the most significant digits that fits; a rounding goes into `report`.
-void write_field(std::ostream& out, double value, TetExportReport& report) {
+void write_field(TextBuffer& out, double value, TetExportReport& report) {
   std::array<char, 32> buffer;  // the longest shortest-round-trip double is 24 characters
   char* const first = buffer.data();
   char* last = std::to_chars(first, first + buffer.size(), value).ptr;
@@ -124,10 +135,10 @@ void write_field(std::ostream& out, double value, TetExportReport& report) {
     ++report.rounded_coordinates;
     report.max_relative_rounding = std::max(report.max_relative_rounding, std::abs(written - value) / std::abs(value));
   }
-  out.write(first, last - first);
+  out << std::string_view(first, static_cast<std::size_t>(last - first));
 }
 
-void write_nodes(std::ostream& out, const TetMesh& mesh, TetExportReport& report) {
+void write_nodes(TextBuffer& out, const TetMesh& mesh, TetExportReport& report) {
   out << "*NODE\n";
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     out << v + 1;
@@ -202,7 +213,7 @@ std::vector<std::size_t> distinct_ids(std::vector<std::size_t> ids) {
 const char* element_type(const TetMesh& mesh) { return mesh.quadratic() ? "C3D10" : "C3D4"; }
 
 // One line per element: 11 entries at most for C3D10, within the 16 of a data line.
-void write_elements(std::ostream& out, const TetMesh& mesh, const SetNames& names) {
+void write_elements(TextBuffer& out, const TetMesh& mesh, const SetNames& names) {
   for (const auto& [region, tets] : group_by_tag(mesh.tet_regions)) {
     out << "*ELEMENT, TYPE=" << element_type(mesh) << ", ELSET=" << names.region.at(region) << '\n';
     for (std::size_t t : tets) {
@@ -215,7 +226,7 @@ void write_elements(std::ostream& out, const TetMesh& mesh, const SetNames& name
   }
 }
 
-void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<FaceOwner>& owners,
+void write_boundaries(TextBuffer& out, const TetMesh& mesh, const std::vector<FaceOwner>& owners,
                       const SetNames& names) {
   const std::vector<std::array<std::uint32_t, 3>> face_nodes = boundary_face_edge_nodes(mesh);
   for (const auto& [tag, faces] : group_by_tag(mesh.boundary_tags)) {
@@ -240,13 +251,15 @@ void write_boundaries(std::ostream& out, const TetMesh& mesh, const std::vector<
 void write_abaqus(const TetMesh& mesh, const std::string& path, TetExportReport& report) {
   const std::vector<FaceOwner> owners = face_owners(mesh, path);
   const SetNames names = set_names(mesh, path);
-  write_file_atomically(path, [&](std::ostream& out) {
+  write_file_atomically(path, [&](std::ostream& stream) {
     report = {};
+    TextBuffer out(stream);
     out << "*HEADING\n"
         << "meshprep tetrahedral mesh: " << mesh.points.size() << " nodes, " << mesh.tets.size() << ' ' << element_type(mesh) << " elements\n";
     write_nodes(out, mesh, report);
     write_elements(out, mesh, names);
     write_boundaries(out, mesh, owners, names);
+    out.flush();
   });
 }
 

@@ -2,7 +2,7 @@
 // https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html), two files:
 //
 // x.vtu           the tets (VTK_TETRA, cell type 10; VTK_QUADRATIC_TETRA, 24, second-order) with
-//                 the region as Int32 cell data "region" and each tet's quality as Float64 cell data
+//                 the region as Int32 cell data "region" and each tet's quality as Float32 cell data
 //                 (vtk_cell_quality.h);
 // x_boundary.vtu  the boundary faces (VTK_TRIANGLE, 5; VTK_QUADRATIC_TRIANGLE, 22), outward, on the
 //                 points they use, with the
@@ -27,9 +27,10 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/patch_names.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -44,13 +45,21 @@ std::vector<VtuTagName> tag_names(const TagNames& names, const std::vector<int>&
   return named;
 }
 
+// The ids as Int32 when every one fits (half the bytes of Int64, VTK 9's own choice; every VTK
+// reader, meshio and import_vtu.cpp take either), else as Int64.
+VtuArray index_array(std::string name, const std::vector<std::int64_t>& ids, std::size_t per_line = kVtuValuesPerLine) {
+  if (std::all_of(ids.begin(), ids.end(), [](std::int64_t id) { return id <= std::numeric_limits<std::int32_t>::max(); }))
+    return vtu_array(std::move(name), std::vector<std::int32_t>(ids.begin(), ids.end()), 1, per_line);
+  return vtu_array(std::move(name), ids, 1, per_line);
+}
+
 // The cells of `piece`, each of `corners` point ids in `connectivity` and of VTK cell type `type`;
 // a cell's offset is where its ids end in `connectivity`.
 void set_cells(VtuPiece& piece, const std::vector<std::int64_t>& connectivity, std::size_t corners, std::uint8_t type) {
   std::vector<std::int64_t> offsets(piece.num_cells);
   for (std::size_t c = 0; c < piece.num_cells; ++c) offsets[c] = static_cast<std::int64_t>(corners * (c + 1));
-  piece.connectivity = vtu_array("connectivity", connectivity, 1, corners);
-  piece.offsets = vtu_array("offsets", offsets);
+  piece.connectivity = index_array("connectivity", connectivity, corners);
+  piece.offsets = index_array("offsets", offsets);
   piece.types = vtu_array("types", std::vector<std::uint8_t>(piece.num_cells, type));
 }
 
@@ -67,18 +76,18 @@ VtuPiece tets_piece(const TetMesh& mesh) {
   piece.num_cells = mesh.tets.size();
   piece.points = points_array(mesh.points);
   const std::size_t nodes_per_tet = mesh.quadratic() ? 10 : 4;
-  std::vector<std::int64_t> connectivity;
-  connectivity.reserve(nodes_per_tet * mesh.tets.size());
+  std::vector<std::int64_t> connectivity(nodes_per_tet * mesh.tets.size());
+  auto id = connectivity.begin();
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    connectivity.insert(connectivity.end(), mesh.tets[t].begin(), mesh.tets[t].end());
-    if (mesh.quadratic()) connectivity.insert(connectivity.end(), mesh.tet_edge_nodes[t].begin(), mesh.tet_edge_nodes[t].end());
+    id = std::copy(mesh.tets[t].begin(), mesh.tets[t].end(), id);
+    if (mesh.quadratic()) id = std::copy(mesh.tet_edge_nodes[t].begin(), mesh.tet_edge_nodes[t].end(), id);
   }
   set_cells(piece, connectivity, nodes_per_tet, static_cast<std::uint8_t>(vtk_tet_type(mesh)));
   piece.cell_scalars = "region";
   piece.cell_data.push_back(vtu_array("region", std::vector<std::int32_t>(mesh.tet_regions.begin(), mesh.tet_regions.end())));
   const std::vector<TetShape> shapes = tet_shapes(mesh);
   for (const VtkQualityArray& array : kVtkQualityArrays) {
-    std::vector<double> values(shapes.size());
+    std::vector<float> values(shapes.size());
     for (std::size_t t = 0; t < shapes.size(); ++t) values[t] = vtk_cell_value(shapes[t].*array.field);
     piece.cell_data.push_back(vtu_array(array.name, values));
   }
@@ -90,16 +99,17 @@ VtuPiece tets_piece(const TetMesh& mesh) {
 // VTK_QUADRATIC_TRIANGLE (corners, then the nodes of edges (0,1) (1,2) (2,0)).
 VtuPiece boundary_piece(const TetMesh& mesh) {
   VtuPiece piece;
-  std::map<std::uint32_t, std::int64_t> local;  // mesh point -> its index here
+  constexpr std::int64_t kUnused = -1;
+  std::vector<std::int64_t> local(mesh.points.size(), kUnused);  // mesh point -> its index here
   std::vector<std::int64_t> mesh_point_id, connectivity;
   std::vector<Vec3> points;
   const auto add = [&](std::uint32_t v) {
-    const auto [it, added] = local.emplace(v, static_cast<std::int64_t>(points.size()));
-    if (added) {
+    if (local[v] == kUnused) {
+      local[v] = static_cast<std::int64_t>(points.size());
       points.push_back(mesh.points[v]);
       mesh_point_id.push_back(v);
     }
-    connectivity.push_back(it->second);
+    connectivity.push_back(local[v]);
   };
   const std::vector<std::array<std::uint32_t, 3>> edge_nodes = boundary_face_edge_nodes(mesh);
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {

@@ -37,17 +37,39 @@ std::array<Vec3, 4> face_normals(const Vec3& p0, const Vec3& p1, const Vec3& p2,
 
 // Every pair of faces meets at one edge (the edge opposite the two other vertices); the interior
 // dihedral angle there is pi minus the angle between the outward normals. atan2(|n1 x n2|, n1.n2)
-// stays accurate near 0 and pi, where acos of a normalised dot product does not.
+// stays accurate near 0 and pi, where acos of a normalised dot product does not; but it is the
+// dearest part of a tet's shape, so the six cosines pick the pairs that can hold the extremes and
+// only those get it. A cosine is off by a few ulps, so every pair within kCosineMargin of the
+// extreme cosine is a candidate: the result is the six atan2's minimum and maximum exactly.
 std::pair<double, double> dihedral_range_deg(const std::array<Vec3, 4>& normals) {
+  constexpr double kCosineMargin = 1e-12;
+  std::array<double, 4> lengths;
+  for (int k = 0; k < 4; ++k) lengths[k] = normals[k].norm();
+  std::array<double, 6> cosines;
+  std::array<std::pair<int, int>, 6> pairs;
+  int n = 0;
+  for (int k = 0; k < 4; ++k)
+    for (int l = k + 1; l < 4; ++l, ++n) {
+      pairs[n] = {k, l};
+      cosines[n] = normals[k].dot(normals[l]) / (lengths[k] * lengths[l]);
+    }
+  // A zero normal (a face of zero area, or one whose length underflows) gives a cosine that is not
+  // finite: then every pair is a candidate.
+  const auto [lowest, highest] = std::minmax_element(cosines.begin(), cosines.end());
+  const bool all = std::any_of(cosines.begin(), cosines.end(), [](double c) { return !std::isfinite(c); });
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
-  for (int k = 0; k < 4; ++k)
-    for (int l = k + 1; l < 4; ++l) {
-      const double between_normals = std::atan2(normals[k].cross(normals[l]).norm(), normals[k].dot(normals[l]));
-      const double dihedral = (M_PI - between_normals) * kDegreesPerRadian;
-      lo = std::min(lo, dihedral);
-      hi = std::max(hi, dihedral);
-    }
+  for (int i = 0; i < 6; ++i) {
+    // The largest angle between normals (smallest dihedral) has the lowest cosine, and the reverse.
+    const bool min_candidate = all || cosines[i] <= *lowest + kCosineMargin;
+    const bool max_candidate = all || cosines[i] >= *highest - kCosineMargin;
+    if (!min_candidate && !max_candidate) continue;
+    const auto [k, l] = pairs[i];
+    const double between_normals = std::atan2(normals[k].cross(normals[l]).norm(), normals[k].dot(normals[l]));
+    const double dihedral = (M_PI - between_normals) * kDegreesPerRadian;
+    lo = std::min(lo, dihedral);
+    hi = std::max(hi, dihedral);
+  }
   return {lo, hi};
 }
 

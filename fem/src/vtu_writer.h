@@ -14,24 +14,30 @@
 
 namespace meshprep::detail {
 
+/// Values per line of an ASCII array unless its tuples are lines (points, cells): ParaView's own
+/// number; one per line would make the indentation a third of the file.
+inline constexpr std::size_t kVtuValuesPerLine = 6;
+
 /// One data array, its values stored little endian.
 struct VtuArray {
   std::string name;          ///< empty for the points
-  const char* type = "";     ///< "Float64", "Int64", "Int32" or "UInt8"
+  const char* type = "";     ///< "Float64", "Float32", "Int64", "Int32" or "UInt8"
   std::size_t components = 1;
-  std::size_t per_line = 1;  ///< values per line of ASCII text
+  std::size_t per_line = kVtuValuesPerLine;  ///< values per line of ASCII text
   std::string bytes;
 };
 
 /// The array `name` holding `values` (of `components` components; `per_line` values a line in ASCII).
 VtuArray vtu_array(std::string name, const std::vector<double>& values, std::size_t components = 1,
-                   std::size_t per_line = 1);
+                   std::size_t per_line = kVtuValuesPerLine);
+VtuArray vtu_array(std::string name, const std::vector<float>& values, std::size_t components = 1,
+                   std::size_t per_line = kVtuValuesPerLine);
 VtuArray vtu_array(std::string name, const std::vector<std::int64_t>& values, std::size_t components = 1,
-                   std::size_t per_line = 1);
+                   std::size_t per_line = kVtuValuesPerLine);
 VtuArray vtu_array(std::string name, const std::vector<std::int32_t>& values, std::size_t components = 1,
-                   std::size_t per_line = 1);
+                   std::size_t per_line = kVtuValuesPerLine);
 VtuArray vtu_array(std::string name, const std::vector<std::uint8_t>& values, std::size_t components = 1,
-                   std::size_t per_line = 1);
+                   std::size_t per_line = kVtuValuesPerLine);
 
 /// A tag's name, in the grid's <FieldData>: an Int32 array named by it holding [tag, dimension],
 /// the form in which meshio keeps Gmsh's physical names (field_data) and ParaView lists field data.

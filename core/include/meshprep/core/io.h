@@ -116,4 +116,8 @@ std::string read_input_file(const std::string& path);
 /// Lower-case extension without the dot ("off" for "a/B.OFF"); empty if none.
 std::string extension_of(const std::string& path);
 
+/// Whether `path` names a surface mesh by its extension (.off, .obj, .ply, .stl: what read_soup
+/// reads).
+bool is_surface_mesh_path(const std::string& path);
+
 }  // namespace meshprep
