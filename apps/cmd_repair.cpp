@@ -41,7 +41,13 @@ int run_repair(const RepairOptions& o) {
   ensure_distinct_files({o.input}, {o.output, o.json});
   TriangleSoup surface = read_soup(o.input);
   if (surface.triangles.empty()) throw InvalidInput(o.input + ": no faces to repair");
-  const RepairResult result = repair(surface, o.params);
+  const RepairResult result = [&] {
+    try {
+      return repair(surface, o.params);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(o.input + ": " + e.what());
+    }
+  }();
   const Readiness readiness = check_fem_readiness(surface, result.free_of_self_intersections);
   if (!readiness.ready()) {
     std::string left;

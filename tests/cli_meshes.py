@@ -12,6 +12,9 @@ Usage: cli_meshes.py NAME...   (NAME.off is written for each)
   holed      a 4 x 4 grid without its middle 2 x 2 cells (two boundary loops)
   sliver     a closed tet of 4 triangles whose smallest dihedral angle is 2.005 degrees (largest
              177.2): (0,0,0), (1,1,0), (0,1,h), (1,0,h), h = 0.0175 (tet_quality_test's SliverByHand)
+  plate      the cube scaled to 100 x 100 x 0.05 (a sheet part thinner than the weld distance)
+  double_sided the cube with every face listed twice, once per orientation
+  collapsed  50 faces whose three corners are one point each (zero area)
 """
 import math
 import sys
@@ -45,6 +48,10 @@ def meshes():
         "holed": grid(4, lambda i, j: 0.0, skip={(1, 1), (2, 1), (1, 2), (2, 2)}),
         "sliver": ([(0.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0175), (1.0, 0.0, 0.0175)],
                    [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)]),
+        "plate": ([(100.0 * x, 100.0 * y, 0.05 * z) for (x, y, z) in P], T),
+        "double_sided": (P, T + [(a, c, b) for (a, b, c) in T]),
+        "collapsed": ([(float(k), 0.0, 0.0) for k in range(50) for _ in range(3)],
+                      [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(50)]),
     }
 
 

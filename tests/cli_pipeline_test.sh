@@ -242,6 +242,27 @@ python3 -c "
 import json; j = json.load(open('boxes.json')); d = j['stages'][0]['details']
 assert d['intersecting_pairs'] > 0 and d['removed_faces'] > 0 and j['fem_ready'] is True, d" &&
   [ -s out_boxes_repaired/tets.msh ] && ok || bad "--repair on crossing boxes: the union or the tets"
+# Issue 45: the repair leaves a valid closed part as it is, however thin (the plate was welded
+# shut and extruded as a terrain: volume 28,284 for 500, exit 0); a double-sided export keeps one
+# copy of each face; faces of zero area alone are refused (exit 2, nothing written), not repaired
+# into an empty file.
+python3 "$here/cli_meshes.py" plate double_sided collapsed
+"$bin" pipeline plate.off -o out_plate --repair --quiet --json plate.json > /dev/null 2> err.txt
+python3 -c "
+import json; j = json.load(open('plate.json')); d = j['stages'][0]['details']
+assert d['input_closed'] is True and d['welded_vertices'] == 0 and d['duplicate_faces'] == d['degenerate_faces'] == 0, d
+assert j['stages'][0]['faces_after'] == 12, j['stages'][0]
+assert 'extrude_base_depth' not in json.dumps(j), 'the plate was extruded'" && ok || bad "--repair on a thin plate"
+"$bin" quality out_plate/tets.msh --json - 2> /dev/null | python3 -c "
+import json, sys; v = json.load(sys.stdin)['tet_quality']['volume']
+assert abs(v - 500) <= 1e-9 * 500, v" && ok || bad "the plate's tets keep its volume"
+"$bin" repair double_sided.off -o double_repaired.off > /dev/null 2> err.txt; expect_exit "repair, double-sided" 0 $?
+[ "$(sed -n 2p double_repaired.off)" = "8 12 0" ] && ok || bad "a double-sided cube keeps 12 faces"
+"$bin" repair collapsed.off -o collapsed_repaired.off > /dev/null 2> err.txt; expect_exit "repair, zero-area faces" 2 $?
+one_line "repair, zero-area faces" "collapsed.off: repair: no face is left of 50: 50 name a vertex twice"
+[ ! -e collapsed_repaired.off ] && ok || bad "an empty repair was written"
+"$bin" pipeline collapsed.off -o out_collapsed --repair > /dev/null 2> err.txt; expect_exit "pipeline --repair, zero-area faces" 2 $?
+one_line "pipeline --repair, zero-area faces" "collapsed.off: repair: no face is left of 50"
 # With a target, simplification runs (it may remove crossings) and the final surface is judged:
 # the boxes still cross, so not FEM-ready, exit 1, the outputs written and saying why.
 "$bin" pipeline two_boxes.off -o out_boxes_simplified --ratio 0.5 > /dev/null 2> err.txt

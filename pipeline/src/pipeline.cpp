@@ -230,12 +230,18 @@ class Run {
     loaded.soup = read_soup(result_.input, &loaded.read);
     record.faces_before = loaded.soup.triangles.size();
     RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
+    // A closed input stays a solid: the terrain rule (an open sheet extruded into a block) is for
+    // sheets the file holds, never for what the repair left open of a solid.
+    if (r.input_closed && r.open_holes > 0)
+      throw PipelineFailed(result_.input + ": the repair left " + std::to_string(r.open_holes) +
+                           " holes open in a closed input (" + std::to_string(r.removed_faces) +
+                           " pieces removed where faces cross); nothing is written");
     const bool outline_filled = r.open_holes == 1 && close_sheet(loaded.soup, r);
     loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
     record.seconds = r.seconds;
     report = analyze_quality(loaded.soup, stage_params_);
     fill_shape(record, report);
-    record.details = picked(to_json(r), {"welded_vertices", "degenerate_faces", "duplicate_faces", "split_edges",
+    record.details = picked(to_json(r), {"input_closed", "welded_vertices", "degenerate_faces", "duplicate_faces", "split_edges",
                                          "split_vertices", "flipped_faces", "inverted_components", "filled_holes",
                                          "open_holes", "holes", "intersecting_pairs", "cut_faces", "removed_faces",
                                          "nested_components", "cavities", "separated_pinches"});

@@ -54,20 +54,28 @@ class Patch {
  private:
   static constexpr std::size_t kNone = SIZE_MAX;
 
+  // An edge of more than two patch faces (a rim that passes a vertex twice can give one) is
+  // crowded: it keeps its faces as they are, never flipped.
   void link(std::size_t f) {
     for (int k = 0; k < 3; ++k) {
-      auto& slots = faces_of_edge_.try_emplace(edge_key(faces_[f][k], faces_[f][(k + 1) % 3]), Slots{kNone, kNone})
-                        .first->second;
-      slots[slots[0] == kNone ? 0 : 1] = f;
+      const std::uint64_t key = edge_key(faces_[f][k], faces_[f][(k + 1) % 3]);
+      auto& slots = faces_of_edge_.try_emplace(key, Slots{kNone, kNone}).first->second;
+      if (slots[0] == kNone)
+        slots[0] = f;
+      else if (slots[1] == kNone)
+        slots[1] = f;
+      else
+        crowded_.insert(key);
     }
   }
 
   void unlink(std::size_t f) {
     for (int k = 0; k < 3; ++k) {
       const auto found = faces_of_edge_.find(edge_key(faces_[f][k], faces_[f][(k + 1) % 3]));
+      if (found == faces_of_edge_.end()) continue;
       Slots& slots = found->second;
-      if (slots[0] == f) slots[0] = slots[1];
-      slots[1] = kNone;
+      if (slots[0] == f) slots[0] = slots[1], slots[1] = kNone;
+      if (slots[1] == f) slots[1] = kNone;
       if (slots[0] == kNone) faces_of_edge_.erase(found);
     }
   }
@@ -77,10 +85,10 @@ class Patch {
   bool flip_if_not_delaunay(std::uint32_t a, std::uint32_t b) {
     const auto found = faces_of_edge_.find(edge_key(a, b));
     if (found == faces_of_edge_.end() || found->second[1] == kNone) return false;  // a rim edge
+    if (crowded_.count(found->first)) return false;
     std::size_t f = found->second[0], g = found->second[1];
-    int k = 0;
-    while (faces_[f][k] != a) ++k;
-    if (faces_[f][(k + 1) % 3] != b) std::swap(f, g);  // f runs a -> b
+    if (!runs(f, a, b)) std::swap(f, g);  // f runs a -> b
+    if (!runs(f, a, b) || !runs(g, b, a)) return false;  // the two faces disagree in orientation
     const std::uint32_t c = opposite(f, a, b), d = opposite(g, a, b);
     if (c == d || surface_edges_.count(edge_key(c, d)) || faces_of_edge_.count(edge_key(c, d))) return false;
     const Vec3 &pa = points_[a], &pb = points_[b];
@@ -93,6 +101,13 @@ class Patch {
     link(f);
     link(g);
     return true;
+  }
+
+  // Whether face f has the edge a -> b in its own orientation.
+  bool runs(std::size_t f, std::uint32_t a, std::uint32_t b) const {
+    for (int k = 0; k < 3; ++k)
+      if (faces_[f][k] == a && faces_[f][(k + 1) % 3] == b) return true;
+    return false;
   }
 
   bool degenerate(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
@@ -111,6 +126,7 @@ class Patch {
   std::vector<Triangle>& faces_;
   const std::unordered_set<std::uint64_t>& surface_edges_;
   std::unordered_map<std::uint64_t, Slots> faces_of_edge_;
+  std::unordered_set<std::uint64_t> crowded_;
 };
 
 }  // namespace

@@ -11,11 +11,29 @@
 #include "meshprep/preprocess/repair/repair_parameters.h"
 #include "meshprep/quality/face_edges.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace meshprep {
+
+namespace {
+
+// A repair never returns an empty surface: what it removed is the problem to name.
+[[noreturn]] void refuse_empty(std::size_t input_faces, const RepairResult& result) {
+  std::array<char, 32> weld_distance_text;
+  std::snprintf(weld_distance_text.data(), weld_distance_text.size(), "%.3g", result.weld_distance);
+  throw InvalidInput("repair: no face is left of " + std::to_string(input_faces) + ": " +
+                     std::to_string(result.degenerate_faces) + " name a vertex twice once vertices within " +
+                     weld_distance_text.data() + " are welded (zero-area faces), " +
+                     std::to_string(result.duplicate_faces) + " repeat another face's vertices, " +
+                     std::to_string(result.removed_faces) + " pieces lie inside the solid; nothing is written");
+}
+
+}  // namespace
 
 RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (!(params.weld_tolerance >= 0 && std::isfinite(params.weld_tolerance)))
@@ -24,11 +42,14 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   const auto start = std::chrono::steady_clock::now();
   RepairResult result;
   result.weld_distance = params.weld_tolerance * detail::median_edge_length(surface);
-  const detail::WeldCounts weld = detail::weld_vertices(surface, result.weld_distance);
+  const std::size_t input_faces = surface.triangles.size();
+  const detail::WeldCounts weld = detail::weld_vertices(surface, result.weld_distance, detail::WeldScope::open_edges);
+  result.input_closed = weld.input_closed;
   result.welded_vertices = weld.welded_vertices;
   result.degenerate_faces = weld.degenerate_faces;
   result.duplicate_faces = weld.duplicate_faces;
   result.unused_vertices = weld.unused_vertices;
+  if (surface.triangles.empty()) refuse_empty(input_faces, result);
   // The steps below walk the same sorted face edges: sorted once, and again only after a step
   // that changed the faces.
   std::vector<FaceEdge> uses = sorted_face_edges(surface);
@@ -61,6 +82,7 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.cavities = crossing.cavities;
   result.separated_pinches = crossing.separated_pinches;
   result.free_of_self_intersections = crossing.found_none;
+  if (surface.triangles.empty()) refuse_empty(input_faces, result);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -7,6 +7,7 @@ namespace meshprep {
 nlohmann::ordered_json to_json(const RepairResult& result) {
   nlohmann::ordered_json json;
   json["weld_distance"] = result.weld_distance;
+  json["input_closed"] = result.input_closed;
   json["welded_vertices"] = result.welded_vertices;
   json["degenerate_faces"] = result.degenerate_faces;
   json["duplicate_faces"] = result.duplicate_faces;

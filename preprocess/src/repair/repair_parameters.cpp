@@ -9,7 +9,8 @@ const RepairParameters& repair_parameters() {
   // Above a tenth of the median edge, welding would start to merge the ends of real short edges.
   static const RepairParameters parameters{
       {"weld_tolerance", "--weld-tolerance",
-       "vertices closer than this fraction of the median edge length are welded into one; 0 = exact copies only",
+       "vertices on open edges closer than this fraction of the median edge length are welded into one (exact "
+       "copies everywhere; a closed input only at those); 0 = exact copies only",
        {0, 0.1}},
       // No length tells a sheet's outline from a solid's missing part: a flat sheet's outline is
       // at least sqrt 2 x its bounding box's diagonal (a strip's ~2 x, a square terrain's 2.8 x, a

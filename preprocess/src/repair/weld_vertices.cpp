@@ -89,6 +89,36 @@ std::size_t join_close(const TriangleSoup& soup, const std::vector<char>& used, 
   return join_copies(soup, vertices, clusters);
 }
 
+// The used vertices on an edge that one face alone uses, once `clusters` has joined the copies:
+// every member of such a vertex's cluster. A face naming a vertex twice has no edges.
+std::vector<std::uint32_t> open_edge_vertices(const TriangleSoup& soup, UnionFind& clusters) {
+  std::unordered_map<std::uint64_t, std::uint32_t> uses;
+  const auto corners = [&](const Triangle& t) {
+    return Triangle{clusters.find(t[0]), clusters.find(t[1]), clusters.find(t[2])};
+  };
+  for (const Triangle& face : soup.triangles) {
+    const Triangle t = corners(face);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    for (int i = 0; i < 3; ++i) ++uses[edge_key(t[i], t[(i + 1) % 3])];
+  }
+  std::vector<char> open_root(soup.points.size(), 0);
+  for (const Triangle& face : soup.triangles) {
+    const Triangle t = corners(face);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    for (int i = 0; i < 3; ++i)
+      if (uses[edge_key(t[i], t[(i + 1) % 3])] == 1) open_root[t[i]] = open_root[t[(i + 1) % 3]] = 1;
+  }
+  std::vector<std::uint32_t> vertices;
+  std::vector<char> listed(soup.points.size(), 0);
+  for (const Triangle& face : soup.triangles)
+    for (const std::uint32_t v : face)
+      if (open_root[clusters.find(v)] && !listed[v]) {
+        listed[v] = 1;
+        vertices.push_back(v);
+      }
+  return vertices;
+}
+
 using Corners = std::array<std::uint32_t, 3>;
 
 // Each face's sorted corners and index, sorted: faces on the same three vertices are neighbours,
@@ -107,13 +137,21 @@ std::vector<std::pair<Corners, std::uint32_t>> by_corners(const std::vector<Tria
 
 }  // namespace
 
-WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
+WeldCounts weld_vertices(TriangleSoup& soup, double distance, WeldScope scope) {
   WeldCounts counts;
   std::vector<char> used(soup.points.size(), 0);
   for (const Triangle& t : soup.triangles)
     for (const std::uint32_t v : t) used[v] = 1;
   UnionFind clusters(soup.points.size());
-  counts.welded_vertices = join_close(soup, used, distance, clusters);
+  if (scope == WeldScope::everywhere) {
+    counts.welded_vertices = join_close(soup, used, distance, clusters);
+  } else {
+    counts.welded_vertices = join_close(soup, used, 0, clusters);
+    const std::vector<std::uint32_t> open = open_edge_vertices(soup, clusters);
+    counts.input_closed = open.empty();
+    if (distance > 0 && !open.empty() && grid_fits(soup, distance))
+      counts.welded_vertices += join_within(soup, open, distance, clusters);
+  }
 
   // Faces naming a vertex twice go. Of faces on the same three vertices facing the same way, the
   // first in the file stays. Faces on them facing both ways, where every edge of theirs has two
@@ -152,12 +190,31 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
     i = j;
   }
   if (!both_ways.empty()) {
-    std::unordered_map<std::uint64_t, std::size_t> edge_uses;
+    std::unordered_map<std::uint64_t, std::size_t> edge_uses, both_ways_uses;
     for (const Triangle& t : faces)
       for (int i = 0; i < 3; ++i) ++edge_uses[edge_key(t[i], t[(i + 1) % 3])];
-    for (const auto& [first, copies] : both_ways) {
+    // The both-ways groups joined across their shared edges: a wall is such a region whose rim
+    // other faces meet (the solids on either side). A region no other face meets is a part
+    // written double-sided (each face once per orientation): its first copies stay.
+    UnionFind regions(both_ways.size());
+    std::unordered_map<std::uint64_t, std::size_t> group_on_edge;
+    for (std::size_t g = 0; g < both_ways.size(); ++g) {
+      const Triangle& t = faces[both_ways[g].first];
+      for (int i = 0; i < 3; ++i) {
+        const std::uint64_t e = edge_key(t[i], t[(i + 1) % 3]);
+        both_ways_uses[e] += both_ways[g].second;
+        const auto [it, first_on_edge] = group_on_edge.emplace(e, g);
+        if (!first_on_edge) regions.unite(static_cast<std::uint32_t>(g), static_cast<std::uint32_t>(it->second));
+      }
+    }
+    std::vector<char> meets_others(both_ways.size(), 0);
+    for (const auto& [e, uses] : edge_uses)
+      if (const auto it = group_on_edge.find(e); it != group_on_edge.end() && uses > both_ways_uses[e])
+        meets_others[regions.find(static_cast<std::uint32_t>(it->second))] = 1;
+    for (std::size_t g = 0; g < both_ways.size(); ++g) {
+      const auto [first, copies] = both_ways[g];
       const Triangle& t = faces[first];
-      bool wall = true;
+      bool wall = meets_others[regions.find(static_cast<std::uint32_t>(g))];
       for (int i = 0; i < 3; ++i) wall = wall && edge_uses[edge_key(t[i], t[(i + 1) % 3])] >= copies + 2;
       if (wall) removed[first] = 1, ++counts.duplicate_faces;
     }
@@ -171,17 +228,20 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance) {
   faces.resize(kept);
   if (!patches.empty()) patches.resize(kept);
 
+  // The vertices kept in their order in the input: a surface without anything to weld or remove
+  // comes out as it went in, numbering included.
   std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
+  for (const Triangle& t : faces)
+    for (const std::uint32_t v : t) renumber[v] = 0;
   std::vector<Vec3> points;
   points.reserve(soup.points.size());  // all of them, on a clean surface
-  for (Triangle& t : faces)
-    for (std::uint32_t& v : t) {
-      if (renumber[v] == UINT32_MAX) {
-        renumber[v] = static_cast<std::uint32_t>(points.size());
-        points.push_back(soup.points[v]);
-      }
-      v = renumber[v];
+  for (std::size_t v = 0; v < soup.points.size(); ++v)
+    if (renumber[v] != UINT32_MAX) {
+      renumber[v] = static_cast<std::uint32_t>(points.size());
+      points.push_back(soup.points[v]);
     }
+  for (Triangle& t : faces)
+    for (std::uint32_t& v : t) v = renumber[v];
   counts.unused_vertices = soup.points.size() - points.size() - counts.welded_vertices;
   soup.points = std::move(points);
   soup.triangles = std::move(faces);

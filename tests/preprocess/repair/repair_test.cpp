@@ -9,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include "meshprep/core/errors.h"
+
 #include <algorithm>
+#include <string>
 
 namespace meshprep {
 namespace {
@@ -102,6 +105,65 @@ TEST(Repair, ACleanSurfaceIsLeftAsItIs) {
   const RepairResult r = repair(soup);
   EXPECT_EQ(r.welded_vertices + r.degenerate_faces + r.duplicate_faces + r.flipped_faces + r.inverted_components, 0u);
   EXPECT_EQ(soup.triangles.size(), faces);
+}
+
+// A valid closed part comes out as it went in, whatever its thickness against the weld distance
+// (a fraction of the median edge): a 100 x 100 x 0.05 plate of 12 faces (issue 45: its top and
+// bottom were welded, 10 faces removed, the rest extruded as a terrain), at any scale.
+TEST(Repair, AThinClosedPlateIsLeftAsItIs) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    TriangleSoup plate = test::cube();
+    for (Vec3& p : plate.points) p = Vec3(100 * p.x(), 100 * p.y(), 0.05 * p.z()) * scale;
+    const TriangleSoup input = plate;
+    const RepairResult r = repair(plate);
+    EXPECT_TRUE(r.input_closed) << scale;
+    EXPECT_EQ(r.welded_vertices + r.degenerate_faces + r.duplicate_faces, 0u) << scale;
+    EXPECT_EQ(plate.triangles, input.triangles) << scale;
+    EXPECT_EQ(plate.points, input.points) << scale;
+    EXPECT_NEAR(signed_volume(plate), signed_volume(input), 1e-9 * signed_volume(input)) << scale;
+  }
+}
+
+// A cube whose top corner is pulled to 1e-9 above the bottom corner under it: closed, manifold,
+// without crossings, so valid; it was "repaired" into 204 faces with a 0.018 degree angle.
+TEST(Repair, ACubeWithACornerPulledNearItsBottomIsLeftAsItIs) {
+  TriangleSoup cube = test::cube();
+  cube.points[7] = Vec3(1, 1, 1e-9);  // above corner 3, (1, 1, 0)
+  const TriangleSoup input = cube;
+  const RepairResult r = repair(cube);
+  EXPECT_EQ(r.welded_vertices, 0u);
+  EXPECT_EQ(cube.triangles, input.triangles);
+  EXPECT_EQ(cube.points, input.points);
+}
+
+// A part exported double-sided (every face once per orientation) keeps one copy of each face and
+// comes out closed and outward; it was repaired into an empty file with exit 0.
+TEST(Repair, ADoubleSidedCubeKeepsOneCopyOfEachFace) {
+  TriangleSoup soup = test::cube();
+  for (std::size_t f = 0; f < 12; ++f) soup.triangles.push_back({soup.triangles[f][0], soup.triangles[f][2], soup.triangles[f][1]});
+  const RepairResult r = repair(soup);
+  EXPECT_EQ(r.duplicate_faces, 12u);
+  EXPECT_EQ(soup.triangles.size(), 12u);
+  expect_closed_oriented_outward(soup);
+  EXPECT_NEAR(signed_volume(soup), 1.0, 1e-12);
+}
+
+// A soup whose faces all collapse to a point is refused, naming what was removed; no empty
+// surface is ever returned. (Faces on three distinct collinear points stay, for the readiness
+// check to refuse as faces of zero area.)
+TEST(Repair, ASoupOfCollapsedFacesIsRefused) {
+  TriangleSoup soup;
+  for (std::uint32_t f = 0; f < 50; ++f) {
+    const auto first = static_cast<std::uint32_t>(soup.points.size());
+    soup.points.insert(soup.points.end(), 3, Vec3(f, 0, 0));
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  try {
+    repair(soup);
+    FAIL() << "an empty repair was returned";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("no face is left of 50"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

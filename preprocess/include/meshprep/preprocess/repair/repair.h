@@ -1,11 +1,14 @@
 #pragma once
 /// \file repair.h
 /// The repair stage (issue 33): a dirty surface mended without moving the input's vertices. In order:
-/// 1. weld: vertices closer than weld_tolerance x the median edge length become one (the lowest
-///    index of each cluster, where it is: welding never moves a vertex);
+/// 1. weld: exact copies of a vertex become one, and vertices on open edges (an edge that one face
+///    alone uses) closer than weld_tolerance x the median edge length too (the lowest index of each
+///    cluster, where it is: welding never moves a vertex). A closed input is welded at its exact
+///    copies only: a thin wall is never welded shut, a valid part comes out as it went in;
 /// 2. faces that name a vertex twice after welding, and faces repeating another's three vertices,
 ///    are removed (every copy when they face both ways and their edges have two other faces each: the
-///    wall two solids share); vertices no face uses are dropped;
+///    wall two solids share; a part written double-sided keeps one copy of each face); vertices no
+///    face uses are dropped;
 /// 3. non-manifold edges and vertices are split: each sheet meeting there gets its own copy of the
 ///    vertices; the faces on an edge with more than two are paired by their angles around it, so
 ///    two boxes touching along an edge stay two closed boxes (a bow-tie on a hole's rim is joined
@@ -25,7 +28,8 @@
 ///    Why this method: every kept piece lies on the input (to the rounding of the new points), so
 ///    the surface moves by nothing measurable, and it gives the union the issue asks of touching,
 ///    overlapping and nested parts, which a local remesh of the crossing faces cannot.
-/// The caller checks the result (fem's check_fem_readiness) and refuses what is left.
+/// The caller checks the result (fem's check_fem_readiness) and refuses what is left. A repair
+/// that would leave no face throws InvalidInput, naming what it removed.
 
 #include "meshprep/core/mesh.h"
 
@@ -67,6 +71,9 @@ struct RepairHole {
 
 struct RepairResult {
   double weld_distance = 0;             ///< the welding distance used, in the surface's units
+  /// The input, its exact copies joined, had no open edge: no other vertex was welded, and no
+  /// later step may leave it open (a solid is never turned into a sheet).
+  bool input_closed = false;
   std::size_t welded_vertices = 0;      ///< vertices merged into another
   std::size_t degenerate_faces = 0;     ///< removed: a vertex twice after welding
   /// Removed: another face's three vertices (every copy when they are a wall two solids share).
