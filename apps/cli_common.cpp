@@ -8,13 +8,17 @@
 #include "meshprep/quality/quality_parameters.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <thread>
+
+#include <unistd.h>
 
 namespace meshprep::cli {
 
@@ -44,6 +48,21 @@ bool is_character_device(const std::string& path) {
   return fs::is_character_file(path, ec);
 }
 
+// Refuses an output that cannot be written, before any work: found when it is written, it would
+// cost the whole run (issue 45: a missing folder after 7 s of work, exit 1).
+void check_writable(const std::string& output, MissingFolders folders) {
+  std::error_code ec;
+  if (fs::is_directory(output, ec)) throw InvalidInput(output + ": cannot write: it is a folder");
+  if (fs::is_character_file(output, ec)) return;  // /dev/null, /dev/stdout
+  fs::path folder = fs::absolute(output, ec).parent_path();
+  if (folders == MissingFolders::made)
+    while (!fs::exists(folder, ec) && folder != folder.parent_path()) folder = folder.parent_path();
+  if (!fs::exists(folder, ec)) throw InvalidInput(output + ": cannot write: the folder " + folder.string() + " does not exist");
+  if (!fs::is_directory(folder, ec)) throw InvalidInput(output + ": cannot write: " + folder.string() + " is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw InvalidInput(output + ": cannot write in " + folder.string() + ": " + std::strerror(errno));
+}
+
 }  // namespace
 
 std::vector<std::string> files_of(const std::string& path) {
@@ -51,7 +70,8 @@ std::vector<std::string> files_of(const std::string& path) {
   return tet_mesh_files(path);
 }
 
-void ensure_distinct_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+void check_output_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
+                        MissingFolders folders) {
   const auto expanded = [](const std::vector<std::string>& paths) {
     std::vector<std::string> files;
     for (const std::string& path : paths)
@@ -69,6 +89,18 @@ void ensure_distinct_files(const std::vector<std::string>& inputs, const std::ve
         throw InvalidInput(output + ": two outputs would be the same file (also given as " + output_files[j] +
                            "); give each output its own file");
   }
+  for (const std::string& output : output_files) check_writable(output, folders);
+}
+
+CLI::Validator positive() {
+  return CLI::Validator(
+      [](std::string& value) {
+        char* end = nullptr;
+        const double number = std::strtod(value.c_str(), &end);
+        if (end == value.c_str() || *end != '\0') return std::string();  // not a number: the conversion says so
+        return number > 0 ? std::string() : "must be positive, not " + value;
+      },
+      "POSITIVE");
 }
 
 void refuse_non_finite_numbers(CLI::App& app) {

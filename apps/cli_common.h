@@ -36,18 +36,28 @@ void emit_json(const nlohmann::ordered_json& json, const std::string& target);
 /// itself.
 std::vector<std::string> files_of(const std::string& path);
 
+/// Whether a run makes the missing folders of its outputs (the pipeline's -o OUTDIR) or needs them.
+enum class MissingFolders { refused, made };
+
 /// Checks the files of a run before any work: no output may be an input (outputs never clobber
-/// inputs) nor another output (`-o X --json X` would leave the JSON alone in X). Paths are compared
-/// as the files they name (symlinks, `..` and hard links resolved; files_of expanded); empty paths
-/// and "-" (stdout) are skipped, and so is a character device named twice (`/dev/null`).
-/// \throws InvalidInput naming the file and its two roles.
-void ensure_distinct_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
+/// inputs) nor another output (`-o X --json X` would leave the JSON alone in X), and each must be
+/// writable - its folder exists (or, with MissingFolders::made, its nearest existing ancestor is a
+/// folder) and may be written in, and it is no folder itself. Paths are compared as the files
+/// they name (symlinks, `..` and hard links resolved; files_of expanded); empty paths and "-"
+/// (stdout) are skipped, and so is a character device named twice (`/dev/null`).
+/// \throws InvalidInput naming the file and the problem (its two roles, or why it cannot be written).
+void check_output_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
+                        MissingFolders folders = MissingFolders::refused);
 
 /// \throws WorkFailed if `output` (a report against the input) has more self-intersecting face
 /// pairs than the input had, naming the first pair and what to try instead; when it has as many or
 /// fewer but some, says so on stderr (the output is still written: the input had them).
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
+
+/// A validator for a number that must be above 0: "must be positive, not 0" (CLI11's own
+/// PositiveNumber prints its range to DBL_MAX's 309 digits).
+CLI::Validator positive();
 
 /// The name of a validator that marks a floating option for which infinity is meaningful
 /// (--smoothing inf: the least-squares limit); refuse_non_finite_numbers leaves such an option alone.

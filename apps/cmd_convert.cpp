@@ -76,7 +76,7 @@ void check_surface_encoding(const ConvertOptions& o) {
 // A tet mesh's boundary surface (its corner faces), with its tags as patches where the format holds
 // them (OBJ groups, PLY's patch property, ASCII STL's solids; not OFF or binary STL).
 int extract_boundary(const ConvertOptions& o) {
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   if (o.order) throw InvalidInput("convert: --order applies to tet outputs, not to the surface " + o.output);
   check_surface_encoding(o);
   TetReadReport read;
@@ -97,7 +97,7 @@ int extract_boundary(const ConvertOptions& o) {
 
 int convert_tet_mesh(const ConvertOptions& o) {
   if (is_surface_mesh_path(o.output)) return extract_boundary(o);
-  ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
+  check_output_files({o.input, o.reference}, {o.output, o.json});
   TetExportOptions options;  // checked before the input is read: binary .inp is bad usage, whatever the input
   write_naming_both(o, [&] { options = tet_export_options(o.output, "", o.msh_version, o.encoding); });
   TetReadReport read;
@@ -121,7 +121,7 @@ int convert_tet_mesh(const ConvertOptions& o) {
 }
 
 int convert_surface(const ConvertOptions& o) {
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   check_surface_encoding(o);
   ReadReport read;
   const TriangleSoup soup = read_soup(o.input, &read);

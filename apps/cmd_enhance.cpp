@@ -28,7 +28,7 @@ struct EnhanceOptions {
 
 int run_enhance(EnhanceOptions o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
+  check_output_files({o.input, o.reference}, {o.output, o.json});
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "enhancement");
   std::unique_ptr<TriangleSoup> reference;

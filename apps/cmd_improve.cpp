@@ -40,10 +40,10 @@ void print_quality(const char* label, const TetQualityReport& q) {
 
 int run_improve(const ImproveOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input, o.reference}, {o.output, o.json});
+  check_output_files({o.input, o.reference}, {o.output, o.json});
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.encoding);
   if (!is_tet_mesh_path(o.input))
-    throw InvalidInput(o.input + ": not a tet mesh file (.msh .vtu .vtk .mesh .node .ele .xdmf); for a surface use "
+    throw InvalidInput(o.input + ": not a tet mesh file (" + tet_mesh_extensions() + "); for a surface use "
                        "meshprep tetrahedralize");
   TetReadReport read;
   TetMesh tets = read_tet_mesh(o.input, &read);
@@ -77,7 +77,7 @@ int run_improve(const ImproveOptions& o) {
   note_export_rounding(o.output, written);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
-    std::cout << o.input << " -> " << o.output << " (" << read.format << ")\n";
+    std::cout << o.input << " (" << read.format << ") -> " << o.output << '\n';
     print_quality("before", before);
     print_quality("after ", after);
     std::cout << "  improved: " << improvement_summary(improvement) << '\n';

@@ -46,7 +46,7 @@ void check_output(const std::string& output) {
 }
 
 int run_patches(const PatchesOptions& o) {
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   check_output(o.output);
   ReadReport read;
   TriangleSoup surface = read_soup(o.input, &read);

@@ -156,8 +156,9 @@ int run_pipeline_command(const PipelineOptions& o) {
     for (const std::string& sibling : files_of(file)) covered.push_back(sibling);
     outputs.push_back(file);
   }
-  ensure_distinct_files({o.input, o.config}, outputs);
   check_output_dir(o.outdir);  // before the work: an unusable folder fails at once (made when written)
+  check_output_files({o.input, o.config}, outputs, MissingFolders::made);  // the folder -o is made
+  check_output_files({}, {o.json});                                          // --json's is not
 
   const ThreadLimit parallelism(o.threads);
   std::ostream& log = o.json == "-" ? std::cerr : std::cout;
@@ -238,12 +239,12 @@ Action add_pipeline_command(CLI::App& app) {
   auto* ratio =
       cmd->add_option(keep_ratio.flag, o->ratio, "Simplify: " + keep_ratio.help)->check(range_check(keep_ratio.range));
   cmd->add_option("--target-faces", o->target_faces, "Simplify: target number of faces")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->excludes(ratio);
   cmd->add_option("--extrude-base", o->extrude_base,
                   "An open height field (terrain) becomes a block with its base this far below its lowest point "
                   "(default: 2 % of the bounding-box diagonal)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   cmd->add_option("--format", o->format, "Tet mesh format: msh (default), vtu, mesh, inp, node, xdmf")
       ->check(CLI::IsMember({"msh", "vtu", "mesh", "inp", "node", "xdmf"}));
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for msh: 4.1 (default) or 2.2")

@@ -12,6 +12,7 @@
 #include "meshprep/quality/report.h"
 #include "meshprep/report/report_writers.h"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <utility>
@@ -66,7 +67,7 @@ int run_tet_quality(const QualityOptions& o, const std::vector<GateCondition>& g
     if (!value->empty())
       throw InvalidInput(std::string(option) + " is for surface meshes and " + o.input +
                          " is a tet mesh (its report: the text summary, or --json)");
-  ensure_distinct_files({o.input}, {o.json});
+  check_output_files({o.input}, {o.json});
   TetReadReport read;
   const TetMesh mesh = read_tet_mesh(o.input, &read);
   note_read_changes(read);
@@ -82,8 +83,13 @@ int run_quality(const QualityOptions& o) {
   std::vector<GateCondition> gate;
   if (!o.fail_on.empty()) gate = parse_quality_gate(o.fail_on);
   if (is_tet_mesh_path(o.input)) return run_tet_quality(o, gate);
+  if (!is_surface_mesh_path(o.input) && !std::filesystem::is_directory(o.input)) {
+    const std::string extension = extension_of(o.input);
+    throw InvalidInput(o.input + ": " + (extension.empty() ? "no file extension" : "unknown extension '." + extension + "'") +
+                       " (quality reads surfaces: .off, .obj, .ply, .stl; and tet meshes: " + tet_mesh_extensions() + ")");
+  }
 
-  ensure_distinct_files({o.input, o.reference}, {o.json, o.csv, o.vtk, o.html});
+  check_output_files({o.input, o.reference}, {o.json, o.csv, o.vtk, o.html});
   ReadReport read;
   const TriangleSoup soup = read_soup(o.input, &read);
   std::unique_ptr<TriangleSoup> reference;

@@ -36,7 +36,7 @@ std::string check_variation_rule(const std::string& text) {
 
 int run_reconstruct(const ReconstructOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   const PointSet input = read_points(o.input);
   ReconstructParams params = o.params;
   params.columns = o.resolution[0];

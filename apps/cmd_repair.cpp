@@ -38,7 +38,7 @@ std::string done_line(const RepairResult& r) {
 }
 
 int run_repair(const RepairOptions& o) {
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   TriangleSoup surface = read_soup(o.input);
   if (surface.triangles.empty()) throw InvalidInput(o.input + ": no faces to repair");
   const RepairResult result = [&] {

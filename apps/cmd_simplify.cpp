@@ -44,7 +44,7 @@ nlohmann::ordered_json input_facts(const TriangleSoup& soup) {
 
 int run_simplify(const SimplifyOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   if ((o.ratio > 0) == (o.params.target_faces > 0)) throw InvalidInput("give exactly one of --ratio and --faces");
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "simplification");
@@ -111,7 +111,7 @@ Action add_simplify_command(CLI::App& app) {
   auto* ratio = cmd->add_option(p.keep_ratio.flag, o->ratio, capitalised(p.keep_ratio.help))
                     ->check(range_check(p.keep_ratio.range));
   cmd->add_option(p.target_faces.flag, o->params.target_faces, "Target number of faces")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->excludes(ratio);
   add_choice(*cmd, p.cost, o->params.cost, collapse_costs());
   add_parameter(*cmd, p.max_error, o->params.max_error);

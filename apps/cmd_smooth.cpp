@@ -32,7 +32,7 @@ struct SmoothOptions {
 
 int run_smooth(SmoothOptions o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input}, {o.output, o.json});
+  check_output_files({o.input}, {o.output, o.json});
   LoadedMesh loaded = load_mesh(o.input);
   require_all_faces(loaded, "smoothing");
   ProgressBar bar("smooth");

@@ -90,7 +90,7 @@ SurfacePlc prepare_surface(const TetOptions& o, const TriangleSoup& soup, nlohma
 
 int run_tetrahedralize(const TetOptions& o) {
   const ThreadLimit parallelism(o.threads);
-  ensure_distinct_files({o.input}, {o.output, o.json, o.diagnose});
+  check_output_files({o.input}, {o.output, o.json, o.diagnose});
   check_tet_params(o.params);  // a bound TetGen cannot meet is bad usage, whatever the surface
   const TetExportOptions options = tet_export_options(o.output, o.target, o.msh_version, o.encoding);
   TriangleSoup soup = read_soup(o.input);
@@ -191,7 +191,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
   add_parameter(*cmd, p.radius_edge, o->params.radius_edge);
   add_parameter(*cmd, p.min_dihedral_deg, o->params.min_dihedral_deg);
   auto* abs_volume = cmd->add_option("--max-volume", o->params.max_volume, "Largest tet volume (absolute)")
-                         ->check(CLI::PositiveNumber);
+                         ->check(positive());
   add_parameter(*cmd, p.max_volume_relative, o->params.max_volume_relative)->excludes(abs_volume);
   add_parameter(*cmd, p.keep_surface, o->params.keep_surface);
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
@@ -202,7 +202,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
   cmd->add_option("--diagnose", o->diagnose, "If the surface is not FEM-ready, write the offending faces to this mesh file");
   auto* depth = cmd->add_option("--extrude-base", o->extrude_depth,
                                 "Close an open height field into a block with a flat base this far below its lowest point")
-                    ->check(CLI::PositiveNumber);
+                    ->check(positive());
   cmd->add_option("--extrude-base-relative", o->extrude_relative, "Same, as a fraction of the bounding-box diagonal")
       ->check(CLI::Range(1e-9, 100.0))
       ->excludes(depth);

@@ -146,7 +146,7 @@ expect_error "convert without an output message" "give the output file with -o O
 python3 -c "
 import json; j = json.load(open('out/rt.json')); assert j['faces'] == 4 and j['closed'] and abs(j['volume'] - 1/3) < 1e-6, j" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: round trip"; }
-"$bin" convert tet.off /nonexistent-dir/x.off > /dev/null 2> err.txt; check "unwritable output" 1 $?
+"$bin" convert tet.off /nonexistent-dir/x.off > /dev/null 2> err.txt; check "unwritable output" 2 $?  # found before any work
 expect_error "unwritable message" "nonexistent-dir"
 
 # simplify: reaches the target, keeps the sphere closed, reports the output's quality against the input.
@@ -328,6 +328,54 @@ body = lines[lines.index('end_header') + 1:][:j['vertices']]
 sigma = [float(l.split()[3]) for l in body]
 assert len(sigma) == j['vertices'] and min(sigma) >= 0 and max(sigma) <= v['patch_sigma']['max'] + 1e-12, sigma[:5]" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: reconstruct sigma in ply and json"; }
+
+# ---- issue 45, items 7, 8, 12, 14, 16: every message says what is wrong, before any work -------
+refused() {  # refused NAME PATTERN ARGS...: `meshprep ARGS` exits 2 with one error line matching PATTERN
+  local name=$1 pattern=$2
+  shift 2
+  "$bin" "$@" > /dev/null 2> err.txt
+  check "$name" 2 $?
+  expect_error "$name" "$pattern"
+}
+refused "mistyped command" "unknown command 'pipelin' (did you mean 'pipeline'?)" pipelin tet.off -o out45/p
+"$bin" help pipeline > help.txt 2> err.txt; check "help COMMAND" 0 $?
+grep -q "Usage: pipeline" help.txt && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: help pipeline"; }
+refused "help of a mistyped command" "unknown command 'pipelin' (did you mean 'pipeline'?)" help pipelin
+mkdir -p folder out45
+for command in "quality folder" "tetrahedralize folder -o out45/x.msh" "pipeline folder -o out45/p" "repair folder -o out45/x.off"; do
+  # shellcheck disable=SC2086
+  refused "a folder as input: $command" "folder: a folder, not a mesh file" $command
+done
+refused "quality of an unknown extension" "tet.abc: unknown extension '.abc' (quality reads surfaces: .off, .obj, .ply, .stl; and tet meshes: .msh" quality tet.abc
+refused "output in a missing folder" "missing/x.off: cannot write: the folder .*missing does not exist" smooth tet.off -o missing/x.off
+touch plain
+refused "pipeline folder under a file" "plain/sub: cannot create the output folder: .*plain is not a folder" pipeline tet.off -o plain/sub
+refused "--json to a folder" "folder: cannot write: it is a folder" quality tet.off --json folder
+refused "--faces 0" "faces: must be positive, not 0" simplify tet.off -o out45/x.off --faces 0
+echo '{"tetrahedralize": {"msh_version": 4.1}}' > number.json
+refused "msh_version as a number" "msh_version: expected one of 4.1, 2.2 as a string (in quotes), not 4.1" pipeline tet.off -o out45/p --config number.json
+printf 'OFF\n4 4 0\n0 0 0\n1e-34 1e-34 0\n1e-34 0 1e-34\n0 1e-34 1e-34\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n' > tiny.off
+refused "a part spanning 1e-34" "tiny.off: the coordinates span only 1e-34, less than" quality tiny.off
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n' > short.msh
+refused "msh with fewer nodes than announced" "short.msh: line 10: .*the section ends ('\$EndNodes'): it holds fewer entries than its header announces" quality short.msh
+# Item 12: counts and structures that lie are refused like the other count lies.
+printf '4 3 1000000000 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n' > lie.node
+printf '1 4 0\n1 1 2 3 4\n' > lie.ele
+refused ".node announcing 1e9 attributes" "lie.node: line 2: the header announces 1000000000 more attribute values" quality lie.node
+printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 1 5 0\n$EndEntities\n$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n$Elements\n1 1 1 1\n3 99 4 1\n1 1 2 3 4\n$EndElements\n' > entity.msh
+refused "msh 4.1 block on an undeclared entity" "entity.msh: .*an element block on entity 99 of dimension 3, which \$Entities does not declare" quality entity.msh
+echo '{"repair": {"enabled": true}, "repair": {"enabled": false}}' > twice.json
+refused "a config key given twice" "twice.json: repair is given twice" pipeline tet.off -o out45/p --config twice.json
+echo '{"repair": {"enabled": true, "enabled": false}}' > twice_inner.json
+refused "a config key given twice inside" "twice_inner.json: repair.enabled is given twice" pipeline tet.off -o out45/p --config twice_inner.json
+"$bin" tetrahedralize tet.off -o whole.vtu --ascii > /dev/null 2>&1
+sed '/<\/Piece>/q' whole.vtu > cut.vtu  # every array of the piece there, the document cut after it
+refused ".vtu cut after its piece" "cut.vtu: truncated: the file ends before </UnstructuredGrid>" quality cut.vtu
+"$bin" tetrahedralize tet.off -o whole_binary.vtu > /dev/null 2>&1
+head -c -12 whole_binary.vtu > cut_binary.vtu  # the appended data whole, </VTKFile> cut
+refused "binary .vtu without its end" "cut_binary.vtu: truncated: the file does not end with </VTKFile>" quality cut_binary.vtu
+"$bin" quality whole_binary.vtu > /dev/null 2> err.txt; check "the whole binary .vtu" 0 $?
+[ -z "$(ls -A out45 2>/dev/null)" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL: files written on the errors above"; ls out45; }
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -55,7 +55,7 @@ assert abs(a['tet_quality']['volume'] - b['tet_quality']['volume']) < 1e-12, (a[
 assert a['tet_quality']['min_dihedral_deg']['min'] == j['tet_quality']['min_dihedral_deg']['min']
 " && ok || bad "improve: figures, boundary or volume"
 "$bin" improve cube.off -o x.msh > /dev/null 2> err.txt; expect_exit "improve a surface" 2 $?
-grep -qx "meshprep: error: cube.off: not a tet mesh file (.msh .vtu .vtk .mesh .node .ele .xdmf); for a surface use meshprep tetrahedralize" err.txt &&
+grep -qx "meshprep: error: cube.off: not a tet mesh file (.msh, .vtu, .vtk, .mesh, .node, .ele, .xdmf); for a surface use meshprep tetrahedralize" err.txt &&
   [ ! -e x.msh ] && ok || bad "improve a surface: the message or a file written"
 "$bin" improve missing.msh -o x.msh > /dev/null 2> err.txt; expect_exit "improve a missing file" 2 $?
 printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\n' > broken.msh

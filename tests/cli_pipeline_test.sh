@@ -263,6 +263,19 @@ one_line "repair, zero-area faces" "collapsed.off: repair: no face is left of 50
 [ ! -e collapsed_repaired.off ] && ok || bad "an empty repair was written"
 "$bin" pipeline collapsed.off -o out_collapsed --repair > /dev/null 2> err.txt; expect_exit "pipeline --repair, zero-area faces" 2 $?
 one_line "pipeline --repair, zero-area faces" "collapsed.off: repair: no face is left of 50"
+# Issue 45, item 13: two runs writing one folder at once, in two formats (each removes the other
+# format's tets): the folder ends with one run's outputs whole, never without a tets file.
+python3 "$here/cli_meshes.py" cube
+for try in 1 2 3 4 5 6; do
+  "$bin" pipeline cube.off -o out_race --format msh --quiet > /dev/null 2>&1 &
+  "$bin" pipeline cube.off -o out_race --format vtu --quiet > /dev/null 2>&1
+  wait
+  tets=$(cd out_race && LC_ALL=C ls tets* 2> /dev/null | tr '\n' ' ')
+  format=$(python3 -c "import json; print(json.load(open('out_race/pipeline.json'))['tetrahedralize']['format'])")
+  case "$format:$tets" in msh:"tets.msh " | vtu:"tets.vtu tets_boundary.vtu ") ;; *) echo "race $try: $format, $tets"; break ;; esac
+done
+[ "$try" = 6 ] && case "$format:$tets" in msh:"tets.msh " | vtu:"tets.vtu tets_boundary.vtu ") true ;; *) false ;; esac &&
+  ok || bad "two runs into one folder: one run's outputs whole"
 # With a target, simplification runs (it may remove crossings) and the final surface is judged:
 # the boxes still cross, so not FEM-ready, exit 1, the outputs written and saying why.
 "$bin" pipeline two_boxes.off -o out_boxes_simplified --ratio 0.5 > /dev/null 2> err.txt

@@ -961,7 +961,7 @@ TEST_F(FemImportTest, MalformedMshIsRefused) {
                       "line 13: element 1 references node 99, which $Nodes does not define (4 nodes)");
   expect_refused_text("negative.msh", header + "$Nodes\n-4\n$EndNodes\n", "number of nodes '-4' is negative");
   expect_refused_text("huge.msh", header + "$Nodes\n99999999999999\n1 0 0 0\n$EndNodes\n",
-                      "line 7: node number: '$EndNodes' is not an integer");
+                      "line 7: node number expected, but the section ends ('$EndNodes'): it holds fewer entries than its header announces");
   expect_refused_text("nan.msh", header + "$Nodes\n4\n1 0 0 0\n2 1 nan 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
                       "$Elements\n1\n1 4 2 0 1 1 2 3 4\n$EndElements\n", "point #2 has a non-finite coordinate (nan)");
   // A 10-node tet whose mid-edge nodes are its corners.
@@ -1036,7 +1036,7 @@ TEST_F(FemImportTest, MalformedVtuIsRefused) {
   write_text(path("good.vtu"), good);
   ASSERT_NO_THROW(read_tet_mesh(path("good.vtu")));
   const std::size_t data = good.find('_', good.find("<AppendedData")) + 1;
-  expect_refused_text("truncated.vtu", good.substr(0, data + 30), "DataArray 'Points'");
+  expect_refused_text("truncated.vtu", good.substr(0, data + 30), "truncated: the file does not end with </VTKFile>");
   std::string lying = good;  // the region array's one block announces a huge compressed size
   lying.replace(data + 12, 4, std::string("\xff\xff\xff\x7f", 4));
   expect_refused_text("lying.vtu", lying, "the data ends before");

@@ -730,7 +730,7 @@ TEST_F(IoTest, InputsThatAreNotRegularFilesAreRefusedAtOnce) {
   EXPECT_NE(invalid_input_message([&] { read_soup(path("zero.off")); }).find("zero.off: not a regular file (a character device)"),
             std::string::npos);
   fs::create_directory(path("folder.stl"));
-  EXPECT_NE(invalid_input_message([&] { read_soup(path("folder.stl")); }).find("folder.stl: not a regular file (a folder)"),
+  EXPECT_NE(invalid_input_message([&] { read_soup(path("folder.stl")); }).find("folder.stl: a folder, not a mesh file"),
             std::string::npos);
 }
 

@@ -29,6 +29,7 @@ const SurfaceFormat* surface_format(const std::string& extension) {
 }
 
 detail::SoupReader reader_for(const std::string& path, const std::string& extension) {
+  detail::refuse_folder(path);
   if (const SurfaceFormat* format = surface_format(extension)) return format->reader;
   detail::fail(path, detail::unknown_extension_problem(extension));
 }

@@ -42,6 +42,7 @@ PointSet detail::parse_points(const std::string& path, std::string_view data) {
 }
 
 PointSet read_points(const std::string& path) {
+  detail::refuse_folder(path);
   if (is_surface_mesh_path(path))
     detail::fail(path, "a surface mesh (." + extension_of(path) + "), not a point set (.xyz: x y z per line)");
   return detail::parse_points(path, read_input_file(path));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -18,6 +19,14 @@ namespace {
 // unit; inputs that span more could hang a stage or make its figures infinite (issue 30, item 4).
 double largest_extent() { return std::cbrt(std::sqrt(std::numeric_limits<double>::max())); }
 
+// At the other end, the angle between two faces' normals multiplies eight lengths (each normal a
+// cross product of two edges, then their cross product): below the eighth root of the smallest
+// normal double, about 3.5e-39, every dihedral angle comes out 0 or 180 degrees (issue 45, item
+// 14, saw it from about 1e-38), and below the cube root (2.8e-103) every volume is 0. A part's
+// edges are shorter than its extent, so the bound leaves them a factor of a million: a span under
+// 3.5e-33 is refused.
+double smallest_extent() { return std::pow(std::numeric_limits<double>::min(), 1.0 / 8) * 1e6; }
+
 std::string shown(double value) {
   std::ostringstream out;
   out << std::setprecision(3) << value;
@@ -27,6 +36,11 @@ std::string shown(double value) {
 }  // namespace
 
 void fail(const std::string& path, const std::string& problem) { throw InvalidInput(path + ": " + problem); }
+
+void refuse_folder(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) fail(path, "a folder, not a mesh file: give one of its files");
+}
 
 std::string unknown_extension_problem(const std::string& extension) {
   const std::string supported = " (supported: .off, .obj, .ply, .stl)";
@@ -59,6 +73,12 @@ void check_extent(const std::string& path, const std::vector<Vec3>& points) {
       fail(path, "the coordinates span " + shown(extent) + " along " + "xyz"[axis] + ", more than " +
                      shown(largest_extent()) + " (where a product of six lengths overflows a double)");
   }
+  // All points at one place are left to the checks that name what that makes of the faces.
+  const double extent = (high - low).maxCoeff();
+  if (extent > 0 && extent < smallest_extent())
+    fail(path, "the coordinates span only " + shown(extent) + ", less than " + shown(smallest_extent()) +
+                   " (where products of the lengths underflow a double and every angle is lost); scale the part up "
+                   "(is it in the wrong unit?)");
 }
 
 std::size_t capped_count(std::uint64_t announced, std::size_t bytes, std::size_t min_bytes_each) {

@@ -31,6 +31,9 @@ PointSet parse_points(const std::string& path, std::string_view data);
 /// Throws InvalidInput with the one-line message "<path>: <problem>".
 [[noreturn]] void fail(const std::string& path, const std::string& problem);
 
+/// Refuses a folder given where a file is read ("<path>: a folder, not a mesh file ...").
+void refuse_folder(const std::string& path);
+
 /// The problem with a mesh path whose extension is not off, obj, ply or stl (for readers and writers).
 std::string unknown_extension_problem(const std::string& extension);
 
@@ -45,7 +48,9 @@ std::string non_finite_text(const Vec3& p);
 
 /// Refuses points whose extent along an axis exceeds the largest the stages compute with
 /// (largest_extent, reader_support.cpp), or overflows: InvalidInput "<path>: the coordinates span
-/// <extent> along x, more than ...". Every reader calls this on what it read.
+/// <extent> along x, more than ..."; and points whose whole extent is not zero but below the
+/// smallest (smallest_extent): "<path>: the coordinates span only ...". Every reader calls this on
+/// what it read.
 void check_extent(const std::string& path, const std::vector<Vec3>& points);
 
 /// How many of `announced` items to reserve memory for when each takes at least

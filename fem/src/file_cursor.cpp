@@ -42,16 +42,26 @@ std::uint64_t FileCursor::count(const char* what) {
   return static_cast<std::uint64_t>(value);
 }
 
+// A Gmsh section's end marker ($EndNodes) where a number should be: the counts disagree, which is
+// what to say, not that "$EndNodes" is no number.
+void FileCursor::fail_if_section_ends(std::string_view token, const char* what) const {
+  if (!token.empty() && token[0] == '$')
+    fail_here(std::string(what) + " expected, but the section ends (" + quoted(token) +
+              "): it holds fewer entries than its header announces");
+}
+
 std::int64_t FileCursor::integer_of(std::string_view token, const char* what) const {
   std::int64_t value = 0;
-  if (!parse_int(token, value)) fail_here(std::string(what) + ": " + quoted(token) + " is not an integer");
-  return value;
+  if (parse_int(token, value)) return value;
+  fail_if_section_ends(token, what);
+  fail_here(std::string(what) + ": " + quoted(token) + " is not an integer");
 }
 
 double FileCursor::real_of(std::string_view token, const char* what) const {
   double value = 0;
-  if (!parse_double(token, value)) fail_here(std::string(what) + ": " + quoted(token) + " is not a number");
-  return value;
+  if (parse_double(token, value)) return value;
+  fail_if_section_ends(token, what);
+  fail_here(std::string(what) + ": " + quoted(token) + " is not a number");
 }
 
 void FileCursor::start_binary_data() {

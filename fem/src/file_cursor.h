@@ -75,6 +75,8 @@ class FileCursor {
   void skip_to_blank_line();
 
  private:
+  void fail_if_section_ends(std::string_view token, const char* what) const;
+
   const std::string& name_;
   std::string_view data_;
   TextScanner in_;

@@ -345,14 +345,19 @@ TetMesh read_tet_mesh_from_texts(const TetgenTexts& texts, TetReadReport* report
 
 bool is_tet_mesh_path(const std::string& path) { return detail::find_format(path) != nullptr; }
 
+std::string tet_mesh_extensions() {
+  std::string extensions;
+  for (const detail::Format& f : detail::formats) extensions += std::string(extensions.empty() ? "." : ", .") + f.extension;
+  return extensions;
+}
+
 TetMesh read_tet_mesh(const std::string& path, TetReadReport* report) {
+  detail::refuse_folder(path);
   const detail::Format* format = detail::find_format(path);
   if (!format) {
-    std::string supported;
-    for (const detail::Format& f : detail::formats) supported += std::string(supported.empty() ? "." : ", .") + f.extension;
     const std::string extension = extension_of(path);
     detail::fail(path, (extension.empty() ? std::string("no file extension") : "unknown extension '." + extension + "'") +
-                           " for a tetrahedral mesh (reads " + supported + ")");
+                           " for a tetrahedral mesh (reads " + tet_mesh_extensions() + ")");
   }
   if (format->format) return detail::read_tet_mesh_from_bytes(read_input_file(path), *format->format, path, report);
   return format->read_files(path, report);

@@ -27,7 +27,9 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 #include <map>
+#include <set>
 #include <utility>
 
 namespace meshprep::detail {
@@ -259,6 +261,7 @@ class GmshReader {
     for (int dimension = 0; dimension < 4; ++dimension) {
       for (std::uint64_t e = 0; e < counts[dimension]; ++e) {
         const std::int64_t tag = msh_.integer("entity tag");
+        declared_entities_.insert({dimension, tag});
         for (int c = 0; c < (dimension == 0 ? 3 : 6); ++c) msh_.real("entity bounding box");
         const std::uint64_t num_physicals = msh_.size("number of physical tags");
         for (std::uint64_t p = 0; p < num_physicals; ++p) {
@@ -371,6 +374,11 @@ class GmshReader {
     }
   }
 
+  bool declares_dimension(std::int64_t dimension) const {
+    const auto first = declared_entities_.lower_bound({dimension, std::numeric_limits<std::int64_t>::min()});
+    return first != declared_entities_.end() && first->first == dimension;
+  }
+
   int physical_of(std::int64_t dimension, std::int64_t entity) const {
     const auto it = physical_of_.find({dimension, entity});
     return it == physical_of_.end() ? 0 : it->second;
@@ -389,6 +397,12 @@ class GmshReader {
       const std::int64_t entity = msh_.integer("entity tag");
       const std::int64_t type = msh_.integer("element type");
       const std::uint64_t count = msh_.size("number of elements in the block");
+      // An entity $Entities does not declare, among those it declares of that dimension, has no
+      // physical tag to give: its elements would get a default region without a word (issue 45,
+      // item 12). meshio declares none (its $Entities is empty): then no block is refused.
+      if (declares_dimension(dimension) && !declared_entities_.count({dimension, entity}))
+        in_.fail_here("an element block on entity " + std::to_string(entity) + " of dimension " +
+                      std::to_string(dimension) + ", which $Entities does not declare");
       const int physical = physical_of(dimension, entity);
       for (std::uint64_t e = 0; e < count; ++e, ++read) {
         const auto element = static_cast<std::int64_t>(msh_.size("element tag"));
@@ -450,6 +464,7 @@ class GmshReader {
   std::vector<std::uint64_t> tet_tags_, triangle_tags_;  // element tags, to sort the elements by
   bool nodes_read_ = false, elements_read_ = false;
   std::map<std::pair<std::int64_t, std::int64_t>, int> physical_of_;  // (dimension, entity) -> physical tag
+  std::set<std::pair<std::int64_t, std::int64_t>> declared_entities_;  // (dimension, entity) in $Entities
   TetFileContent content_;
 };
 

@@ -14,7 +14,10 @@
 #include "file_cursor.h"
 #include "readers.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <string>
 
 namespace meshprep::detail {
 namespace {
@@ -65,9 +68,22 @@ class TetgenFile {
   std::int64_t first_ = 1;
 };
 
-// `count` elements of N corners, each followed by its label (region, marker) unless `label` is null.
+// The `extra` values the header announces after what is read of a line (attributes, markers):
+// ignored, as TetGen ignores them, but they must be there - a header announcing a billion
+// attributes that no line holds is a lie like any other count (issue 45, item 12).
+void skip_announced(TetgenFile& file, std::int64_t extra, const char* what) {
+  for (std::int64_t i = 0; i < extra; ++i)
+    if (file.at_line_end())
+      file.fail_here("the header announces " + std::to_string(extra) + " more " + what +
+                     " per line than this line holds");
+    else
+      file.real(what);
+}
+
+// `count` elements of N corners, each followed by its label (region, marker) unless `label` is
+// null, then `extra` values announced by the header.
 template <std::size_t N>
-void read_elements(TetgenFile& file, const char* element, std::uint64_t count, const char* label,
+void read_elements(TetgenFile& file, const char* element, std::uint64_t count, const char* label, std::int64_t extra,
                    std::int64_t node_first, std::size_t num_points, std::vector<std::array<std::uint32_t, N>>& elements,
                    std::vector<int>& labels) {
   const std::size_t reserve = capped_count(count, file.bytes_left(), 2 * N + 2);  // "1 1 2 3\n"
@@ -89,6 +105,7 @@ void read_elements(TetgenFile& file, const char* element, std::uint64_t count, c
       const double value = file.real(label);
       if (!(tag = integral_tag(value))) file.fail_here(std::string(label) + " " + number_text(value) + " is not an integer");
     }
+    skip_announced(file, extra, "attribute values");
     labels.push_back(*tag);
   }
 }
@@ -97,11 +114,14 @@ void read_nodes(TetgenFile& file, TetFileContent& content) {
   std::array<std::int64_t, 3> header{3, 0, 0};  // dimension, attributes, markers
   const std::uint64_t count = file.header("node", header);
   if (header[0] != 3) file.fail_here("dimension " + std::to_string(header[0]) + ": a tetrahedral mesh is 3D");
+  if (header[1] < 0) file.fail_here(std::to_string(header[1]) + " point attributes (a count, at least 0)");
+  if (header[2] != 0 && header[2] != 1) file.fail_here(std::to_string(header[2]) + " boundary markers (0 or 1)");
   content.points.reserve(capped_count(count, file.bytes_left(), 8));  // "1 0 0 0\n"
   for (std::uint64_t v = 0; v < count; ++v) {
     file.record(v);
     Vec3 p;
     for (int c = 0; c < 3; ++c) p[c] = file.real("coordinate");
+    skip_announced(file, header[1] + header[2], "attribute values and markers");
     content.points.push_back(p);
   }
 }
@@ -111,15 +131,17 @@ void read_tets(TetgenFile& file, std::int64_t node_first, TetFileContent& conten
   const std::uint64_t count = file.header("tetrahedron", header);
   if (header[0] != 4)
     file.fail_here(std::to_string(header[0]) + " nodes per tetrahedron: meshprep reads linear (4-node) tetrahedra only");
-  read_elements(file, "tetrahedron", count, header[1] > 0 ? "region attribute" : nullptr, node_first, content.points.size(), content.tets,
-                content.tet_regions);
+  if (header[1] < 0) file.fail_here(std::to_string(header[1]) + " tetrahedron attributes (a count, at least 0)");
+  read_elements(file, "tetrahedron", count, header[1] > 0 ? "region attribute" : nullptr, std::max<std::int64_t>(header[1] - 1, 0),
+                node_first, content.points.size(), content.tets, content.tet_regions);
 }
 
 void read_faces(TetgenFile& file, std::int64_t node_first, TetFileContent& content) {
   std::array<std::int64_t, 1> header{0};  // boundary markers
   const std::uint64_t count = file.header("face", header);
-  read_elements(file, "face", count, header[0] > 0 ? "boundary marker" : nullptr, node_first, content.points.size(), content.triangles,
-                content.triangle_tags);
+  if (header[0] != 0 && header[0] != 1) file.fail_here(std::to_string(header[0]) + " boundary markers (0 or 1)");
+  read_elements(file, "face", count, header[0] > 0 ? "boundary marker" : nullptr, 0, node_first, content.points.size(),
+                content.triangles, content.triangle_tags);
 }
 
 }  // namespace

@@ -176,9 +176,17 @@ class VtuReader {
     read_file_attributes(tag);
     Container container = Container::None;
     Piece* piece = nullptr;
+    bool grid_closed = false;
     while (xml_.next(tag.end, tag)) {
+      if (tag.name == "UnstructuredGrid" && tag.closing) grid_closed = true;
       if (tag.name == "AppendedData" && !tag.closing) {
+        if (!grid_closed) xml_.fail_at(tag.begin, "<AppendedData> inside the <UnstructuredGrid>, which is not closed");
         read_appended_start(tag);
+        require_file_end();
+        return;
+      }
+      if (tag.name == "VTKFile" && tag.closing) {
+        if (!grid_closed) xml_.fail_at(tag.begin, "</VTKFile> before the <UnstructuredGrid> is closed");
         return;
       }
       if (tag.name == "Piece") {
@@ -205,6 +213,17 @@ class VtuReader {
         add_array(*piece, container, tag);
       }
     }
+    // A file cut short can still hold whole pieces (a two-piece file cut after the first one read
+    // as half the mesh, issue 45, item 12): the document must end.
+    fail(name_, std::string("truncated: the file ends before ") + (grid_closed ? "</VTKFile>" : "</UnstructuredGrid>"));
+  }
+
+  // After raw appended data the tags cannot be scanned: the file must end with </VTKFile>.
+  void require_file_end() const {
+    const std::size_t last = data_.find_last_not_of(" \t\r\n");
+    constexpr std::string_view kEnd = "</VTKFile>";
+    if (last == std::string_view::npos || last + 1 < kEnd.size() || data_.substr(last + 1 - kEnd.size(), kEnd.size()) != kEnd)
+      fail(name_, "truncated: the file does not end with </VTKFile> after its <AppendedData>");
   }
 
   void read_appended_start(const XmlTag& tag) {

@@ -16,7 +16,10 @@
 
 #include <cmath>
 #include <functional>
+#include <set>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace meshprep {
 namespace {
@@ -133,7 +136,8 @@ Key choice(const char* section, const std::string& name, T& field, Choices<T> ch
                   field = value;
                   return;
                 }
-            throw BadValue{"expected " + type + ", not " + shown(v)};
+            // 4.1 unquoted is a number: say that the value must be the text.
+            throw BadValue{"expected " + type + (v.is_string() ? "" : " as a string (in quotes)") + ", not " + shown(v)};
           },
           [&field, choices] {
             const std::string chosen = choice_name(choices, field);
@@ -415,9 +419,39 @@ void check_config(const PipelineConfig& config) {
 }
 
 void detail::apply_config_text(std::string_view text, const std::string& origin, PipelineConfig& config) {
+  // JSON lets an object give a key twice and the parser keeps the last value without a word: a
+  // key given twice is refused, named by its path (issue 45, item 12).
+  std::vector<std::set<std::string>> keys_of_object;  // the objects being parsed, innermost last
+  std::vector<std::string> path;                         // the key of each enclosing value
+  const Json::parser_callback_t refuse_repeated_keys = [&](int, Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start:
+        keys_of_object.emplace_back();
+        break;
+      case Json::parse_event_t::object_end:
+        keys_of_object.pop_back();
+        if (!path.empty() && keys_of_object.size() < path.size()) path.pop_back();
+        break;
+      case Json::parse_event_t::key: {
+        const std::string key = parsed.get<std::string>();
+        path.resize(keys_of_object.size() - 1);
+        path.push_back(key);
+        if (!keys_of_object.back().insert(key).second) {
+          std::string name;
+          for (const std::string& k : path) name += (name.empty() ? "" : ".") + k;
+          throw InvalidInput(origin + ": " + name + " is given twice (JSON would keep the last value without a word); "
+                             "give it once");
+        }
+        break;
+      }
+      default:
+        break;
+    }
+    return true;
+  };
   Json json;
   try {
-    json = Json::parse(text);
+    json = Json::parse(text, refuse_repeated_keys);
   } catch (const Json::exception& e) {
     // A parse_error or, for a number beyond the double range, an out_of_range; e.what() reads
     // "[json.exception.parse_error.101] parse error at line L, column C: ..."

@@ -186,6 +186,12 @@ std::vector<std::string> write_pipeline_outputs(const PipelineResult& result, co
   }
   stop_if_asked();
 
+  // Two runs into one folder: each run's renames and removals happen whole, one run's after the
+  // other's, so the folder holds one run's outputs (issue 45, item 13: two runs in other formats
+  // each removed the other's tets, both exited 0, and no tets file was left).
+  const UniqueFd folder_lock(::open(outdir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (folder_lock.get() < 0 || ::flock(folder_lock.get(), LOCK_EX) != 0)
+    throw WriteError(outdir + ": cannot lock the output folder: " + std::strerror(errno));
   for (const std::string& name : names) {
     const std::string target = (fs::path(outdir) / name).string();
     if (std::rename(staging.file(name).c_str(), target.c_str()) != 0)

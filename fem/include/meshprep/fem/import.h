@@ -83,4 +83,7 @@ TetMesh read_tet_mesh(const std::string& path, TetReadReport* report = nullptr);
 /// .xdmf, case-insensitive).
 bool is_tet_mesh_path(const std::string& path);
 
+/// The extensions read_tet_mesh reads, as a message lists them (".msh, .vtu, ...").
+std::string tet_mesh_extensions();
+
 }  // namespace meshprep
