@@ -130,6 +130,7 @@ Json tet_mesh_report(const TetMesh& mesh, const TetReadReport& read) {
                      {"duplicate_triangles", read.duplicate_triangles},
                      {"untagged_boundary_faces", read.untagged_boundary_faces},
                      {"tets_reoriented", read.tets_reoriented},
+                     {"tets_inverted", read.tets_inverted},
                      {"elements_ignored", read.elements_ignored}};
   report["tet_quality"] = to_json(analyze_tet_quality(mesh));
   report["boundary"] = boundary_json(mesh, read);
@@ -140,7 +141,9 @@ void note_read_changes(const TetReadReport& read) {
   const auto note = [&](std::size_t count, const char* what) {
     if (count > 0) std::cerr << "meshprep: note: " << read.path << ": " << count << ' ' << what << '\n';
   };
-  note(read.tets_reoriented, "tets with negative volume were reoriented (corners 2 and 3 swapped)");
+  note(read.tets_reoriented, "tets of negative volume, every tet of their region, were turned over (a mirrored region)");
+  note(read.tets_inverted,
+       "tets have negative volume among positive neighbours: left as they are, inverted (the mesh is tangled)");
   note(read.elements_ignored, "points, lines or other lower-dimensional elements were skipped");
   note(read.duplicate_triangles, "triangles listed twice were read once (with the first one's tag)");
 }

@@ -4,6 +4,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/import.h"
+#include "meshprep/fem/tet_quality.h"
 #include "scratch_dir.h"
 #include "third_party_tools.h"
 #include "tet_test_meshes.h"
@@ -855,15 +856,35 @@ const char* const two_tets_msh22 =
     "4 2 2 9 1 4 3 2\n"     // the shared face: an interface, tag 9
     "$EndElements\n";
 
-TEST_F(FemImportTest, HandWrittenMsh22WithANegativeTet) {
+// A negative tet among positive ones in its region is not turned over: alone, that would hide a
+// tangle (issue 45, item 10). It stays, counted as inverted.
+TEST_F(FemImportTest, HandWrittenMsh22WithANegativeTetAmongPositiveOnes) {
   write_text(path("two.msh"), two_tets_msh22);
   TetReadReport report;
   const TetMesh mesh = read_tet_mesh(path("two.msh"), &report);
   EXPECT_EQ(report.format, "msh 2.2 ascii");
   ASSERT_EQ(mesh.tets.size(), 2u);
   EXPECT_EQ(mesh.tets[0], (Tetrahedron{0, 1, 2, 3}));
-  EXPECT_EQ(mesh.tets[1], (Tetrahedron{1, 3, 4, 2}));  // corners 2 and 3 swapped
-  EXPECT_EQ(report.tets_reoriented, 1u);
+  EXPECT_EQ(mesh.tets[1], (Tetrahedron{1, 3, 2, 4}));  // as written
+  EXPECT_EQ(report.tets_reoriented, 0u);
+  EXPECT_EQ(report.tets_inverted, 1u);
+  EXPECT_LT(tet_volume(mesh, 1), 0);
+  EXPECT_EQ(analyze_tet_quality(mesh).inverted_tets, 1u);
+}
+
+// A region whose every tet is negative was written mirrored: its tets are turned over.
+TEST_F(FemImportTest, HandWrittenMsh22WithAMirroredRegion) {
+  std::string mirrored = two_tets_msh22;
+  const std::string positive = "2 4 2 4 1 1 2 3 4\n";
+  mirrored.replace(mirrored.find(positive), positive.size(), "2 4 2 4 1 1 3 2 4\n");  // negative too
+  write_text(path("two.msh"), mirrored);
+  TetReadReport report;
+  const TetMesh mesh = read_tet_mesh(path("two.msh"), &report);
+  ASSERT_EQ(mesh.tets.size(), 2u);
+  EXPECT_EQ(mesh.tets[0], (Tetrahedron{0, 2, 3, 1}));  // corners 2 and 3 swapped
+  EXPECT_EQ(mesh.tets[1], (Tetrahedron{1, 3, 4, 2}));
+  EXPECT_EQ(report.tets_reoriented, 2u);
+  EXPECT_EQ(report.tets_inverted, 0u);
   EXPECT_EQ(report.elements_ignored, 1u);
   EXPECT_EQ(report.interface_faces, 1u);
   EXPECT_EQ(mesh.tet_regions, (std::vector<int>{4, 4}));

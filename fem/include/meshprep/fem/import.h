@@ -65,7 +65,11 @@ struct TetReadReport {
   std::size_t interface_faces = 0;       ///< of those, faces of two tets (kept with their tags)
   std::size_t duplicate_triangles = 0;   ///< triangles listed again (the first one's tag is kept)
   std::size_t untagged_boundary_faces = 0;  ///< boundary faces the file does not list (tag 1)
-  std::size_t tets_reoriented = 0;       ///< tets with negative volume, corners 2 and 3 swapped
+  /// Tets of negative volume in a region where all are (a mirrored region): corners 2 and 3 swapped.
+  std::size_t tets_reoriented = 0;
+  /// Tets of negative volume among positive ones in their region: left as they are (a tangle, which
+  /// the quality report counts as inverted and the verdict refuses).
+  std::size_t tets_inverted = 0;
   std::size_t elements_ignored = 0;      ///< points, lines, quadrilaterals, ... skipped
   std::vector<RenamedTag> renamed_names;  ///< region and boundary names changed to follow patch_names.h's rule
 };
