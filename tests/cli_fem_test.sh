@@ -78,7 +78,7 @@ signed = lambda q: np.einsum("ij,ij->i", q[t[:, 1]] - q[t[:, 0]], np.cross(q[t[:
 print(int((signed(p) < 0).sum()), repr(float(signed(p).sum())))
 meshio.write(sys.argv[2], meshio.Mesh(p, [("tetra", t)]), file_format="gmsh22", binary=False)
 PY
-read -r negative volume < tangled.txt
+read -r negative volume < <(tail -n 1 tangled.txt)  # meshio may print lines of its own first
 "$bin" quality tangled.msh --json tangled.json > /dev/null 2> err.txt; expect_exit "quality of a tangled mesh" 0 $?
 python3 -c "
 import json, sys; j = json.load(open('tangled.json')); q = j['tet_quality']; n = $negative
