@@ -17,6 +17,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   texts.node = input.substr(0, ele);
   texts.ele = input.substr(ele + 1, face == std::string_view::npos ? std::string_view::npos : face - ele - 1);
   if (face != std::string_view::npos) texts.face = input.substr(face + 1);
-  fuzz::refuse_only_with_meshprep_errors([&] { fuzz::require_valid_tet_mesh(detail::read_tet_mesh_from_texts(texts)); });
+  fuzz::refuse_only_with_meshprep_errors([&] {
+    TetReadReport report;
+    const TetMesh mesh = detail::read_tet_mesh_from_texts(texts, &report);
+    fuzz::require_valid_tet_mesh(mesh, report);
+  });
   return 0;
 }

@@ -35,9 +35,11 @@
 /// The result keeps the TetMesh invariants:
 /// - points in file order, exactly as written (every exporter writes round-trip precision);
 ///   Gmsh files: in node-tag order (4.1 lists them grouped by entity);
-/// - tets in file order (Gmsh: in element-tag order), each positively oriented: a tet with negative
-///   volume has its corners 2 and 3 swapped (formats differ in convention); a flat tet (volume 0)
-///   is kept as it is (a quality problem, not a format error);
+/// - tets in file order (Gmsh: in element-tag order), positively oriented: a region whose every tet
+///   has negative volume has their corners 2 and 3 swapped (a mirrored export; formats differ in
+///   convention); a negative tet among positive ones is kept as it is (a tangle:
+///   TetReadReport::tets_inverted counts them), and so is a flat tet (volume 0; a quality problem,
+///   not a format error);
 /// - regions >= 1: a region 0 or no region becomes 1; negative regions are refused;
 /// - boundary_faces: every face that belongs to exactly one tet is there, oriented outward (away
 ///   from its tet). The triangles the file lists come first, in file order, with the file's tag
