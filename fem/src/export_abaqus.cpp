@@ -34,6 +34,7 @@
 // on what `gmsh -3 -order 2` writes to .inp. Its faces are numbered as C3D4's, so the surfaces
 // are written alike.
 #include "exporters.h"
+#include "tet_faces.h"
 #include "text_buffer.h"
 
 #include "meshprep/core/atomic_file.h"
@@ -59,48 +60,27 @@ namespace {
 constexpr std::size_t max_entries_per_line = 16;
 constexpr std::size_t max_field_length = 20;
 
-// Local C3D4 faces, 0-based (S1..S4).
-constexpr std::array<std::array<int, 3>, 4> c3d4_faces{{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}}};
+// C3D4's face number of the face opposite each corner: S1 = 1-2-3 is opposite corner 4, S2 = 1-4-2
+// opposite 3, S3 = 2-4-3 opposite 1, S4 = 3-4-1 opposite 2 (0-based: corner 0 -> S3, ...).
+constexpr std::array<int, 4> c3d4_face_opposite{3, 4, 2, 1};
 
 struct FaceOwner {
   std::size_t tet;
   int face;  // 1..4 for S1..S4
 };
 
-// The rotation of a triangle that starts at its smallest vertex: equal for equally oriented copies.
-Triangle canonical(const Triangle& t) {
-  const auto first = std::min_element(t.begin(), t.end()) - t.begin();
-  return {t[first], t[(first + 1) % 3], t[(first + 2) % 3]};
-}
-
 // For each (outward) boundary face, the tet having it as an outward face and the face's number.
-// The boundary faces are sorted by their canonical rotation and looked up by binary search; a tet
-// face with a corner off the boundary (most of them) is not looked up at all.
 std::vector<FaceOwner> face_owners(const TetMesh& mesh, const std::string& path) {
-  std::vector<std::pair<Triangle, std::size_t>> boundary(mesh.boundary_faces.size());
-  std::vector<bool> on_boundary(mesh.points.size(), false);
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    boundary[f] = {canonical(mesh.boundary_faces[f]), f};
-    for (const std::uint32_t v : mesh.boundary_faces[f]) on_boundary[v] = true;
-  }
-  std::sort(boundary.begin(), boundary.end());
-  constexpr FaceOwner none{0, 0};
-  std::vector<FaceOwner> owners(mesh.boundary_faces.size(), none);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    for (int k = 0; k < 4; ++k) {
-      const auto& local = c3d4_faces[k];
-      const Tetrahedron& tet = mesh.tets[t];
-      if (!on_boundary[tet[local[0]]] || !on_boundary[tet[local[1]]] || !on_boundary[tet[local[2]]]) continue;
-      // Reversed: the outward orientation of a face listed inward.
-      const Triangle key = canonical({tet[local[0]], tet[local[2]], tet[local[1]]});
-      auto it = std::lower_bound(boundary.begin(), boundary.end(), std::make_pair(key, std::size_t{0}));
-      for (; it != boundary.end() && it->first == key; ++it)
-        if (owners[it->second].face == none.face) owners[it->second] = {t, k + 1};
-    }
-  for (std::size_t f = 0; f < owners.size(); ++f)
-    if (owners[f].face == none.face)
+  const std::vector<std::uint32_t> tet_faces = tet_faces_of(mesh.tets, mesh.boundary_faces);
+  std::vector<FaceOwner> owners(mesh.boundary_faces.size());
+  for (std::size_t f = 0; f < owners.size(); ++f) {
+    const std::uint32_t tet_face = tet_faces[f];
+    if (tet_face == kNoTetFace || !same_orientation(mesh.boundary_faces[f],
+                                                    face_of(mesh.tets[tet_face / 4], static_cast<int>(tet_face % 4))))
       throw InvalidInput(path + ": cannot export: boundary face " + std::to_string(f) +
                          " is not an outward face of any tetrahedron (needed for the *SURFACE)");
+    owners[f] = {tet_face / 4, c3d4_face_opposite[tet_face % 4]};
+  }
   return owners;
 }
 

@@ -213,12 +213,6 @@ void check_face_groups(const TetFaces& faces, const std::vector<Tetrahedron>& te
   }
 }
 
-// Whether triangle a lists the corners of b in the same cyclic order.
-bool same_orientation(const Triangle& a, const Triangle& b) {
-  for (int i = 0; i < 3; ++i)
-    if (a[0] == b[i]) return a[1] == b[(i + 1) % 3];
-  return false;
-}
 
 // The file's triangles (boundary faces turned outward, interfaces as listed), then the boundary
 // faces the file does not list.

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
+#include <vector>
 
 namespace meshprep {
 namespace detail {
@@ -19,6 +21,43 @@ Triangle face_of(const Tetrahedron& tet, int k) {
 Triangle sorted(Triangle corners) {
   std::sort(corners.begin(), corners.end());
   return corners;
+}
+
+bool same_orientation(const Triangle& a, const Triangle& b) {
+  for (int i = 0; i < 3; ++i)
+    if (a[0] == b[i]) return a[1] == b[(i + 1) % 3];
+  return false;
+}
+
+std::vector<std::uint32_t> tet_faces_of(const std::vector<Tetrahedron>& tets, const std::vector<Triangle>& faces) {
+  std::vector<std::pair<Triangle, std::size_t>> keys(faces.size());
+  std::uint32_t largest = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    keys[f] = {sorted(faces[f]), f};
+    largest = std::max(largest, keys[f].first[2]);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> listed(keys.empty() ? 0 : std::size_t{largest} + 1, false);
+  for (const auto& key : keys)
+    for (const std::uint32_t v : key.first) listed[v] = true;
+  const auto corner_listed = [&](std::uint32_t v) { return v < listed.size() && listed[v]; };
+  std::vector<std::uint32_t> found(faces.size(), kNoTetFace);
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    for (int k = 0; k < 4; ++k) {
+      const Triangle face = face_of(tets[t], k);
+      if (!corner_listed(face[0]) || !corner_listed(face[1]) || !corner_listed(face[2])) continue;
+      const Triangle key = sorted(face);
+      for (auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, std::size_t{0}));
+           it != keys.end() && it->first == key; ++it) {
+        std::uint32_t& tet_face = found[it->second];
+        const Triangle& wanted = faces[it->second];
+        if (tet_face == kNoTetFace ||
+            (!same_orientation(wanted, face_of(tets[tet_face / 4], static_cast<int>(tet_face % 4))) &&
+             same_orientation(wanted, face)))
+          tet_face = static_cast<std::uint32_t>(4 * t + static_cast<std::size_t>(k));
+      }
+    }
+  return found;
 }
 
 TetFaces::TetFaces(const std::vector<Tetrahedron>& tets) {

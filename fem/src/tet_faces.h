@@ -16,6 +16,20 @@ Triangle face_of(const Tetrahedron& tet, int k);
 /// The corners in ascending order (the key of a face whatever its orientation).
 Triangle sorted(Triangle corners);
 
+/// Whether triangle a lists the corners of b in the same cyclic order.
+bool same_orientation(const Triangle& a, const Triangle& b);
+
+/// No tet has the face (tet_faces_of).
+inline constexpr std::uint32_t kNoTetFace = ~std::uint32_t{0};
+
+/// For each of `faces`, a tet face with its corners, as 4 * tet + k (face_of(tet, k)): the one of
+/// the same orientation (the face is outward of that tet) where there is one, else the first;
+/// kNoTetFace if no tet has it. Only tet faces whose three corners are all corners of `faces` are
+/// looked up, by binary search (most of a mesh's have one inside): for the boundary faces of a
+/// mesh this is a pass over the tets, not a sort of all their faces (TetFaces).
+/// \pre fewer than 2^30 tets.
+std::vector<std::uint32_t> tet_faces_of(const std::vector<Tetrahedron>& tets, const std::vector<Triangle>& faces);
+
 /// Every face of every tet, sorted by its corners: the entries of one face are adjacent, one per
 /// tet that has it, in tet order. 4 faces per tet are numbered in 32 bits.
 /// \pre fewer than 2^30 tets.

@@ -4,9 +4,7 @@
 
 #include "meshprep/core/errors.h"
 
-#include <algorithm>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace meshprep {
@@ -37,34 +35,12 @@ std::vector<std::array<std::uint32_t, 3>> boundary_face_edge_nodes(const TetMesh
   if (mesh.tet_edge_nodes.size() != mesh.tets.size())
     throw InvalidInput("tet mesh: " + std::to_string(mesh.tet_edge_nodes.size()) + " rows of mid-edge nodes for " +
                        std::to_string(mesh.tets.size()) + " tets");
-  // Each boundary face's tet, found among the tet faces whose three corners lie on the boundary
-  // (most have one inside and are not looked up) by binary search on the sorted corners.
-  std::vector<std::pair<Triangle, std::size_t>> keys(mesh.boundary_faces.size());
-  std::uint32_t largest = 0;
-  for (std::size_t f = 0; f < keys.size(); ++f) {
-    keys[f] = {detail::sorted(mesh.boundary_faces[f]), f};
-    largest = std::max(largest, keys[f].first[2]);
-  }
-  std::sort(keys.begin(), keys.end());
-  std::vector<bool> on_boundary(keys.empty() ? 0 : std::size_t{largest} + 1, false);
-  for (const auto& key : keys)
-    for (const std::uint32_t v : key.first) on_boundary[v] = true;
-  const auto boundary_vertex = [&](std::uint32_t v) { return v < on_boundary.size() && on_boundary[v]; };
-  constexpr std::size_t kNone = ~std::size_t{0};
-  std::vector<std::size_t> owner(mesh.boundary_faces.size(), kNone);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    for (int k = 0; k < 4; ++k) {
-      const Triangle face = detail::face_of(mesh.tets[t], k);
-      if (!boundary_vertex(face[0]) || !boundary_vertex(face[1]) || !boundary_vertex(face[2])) continue;
-      const Triangle key = detail::sorted(face);
-      for (auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, std::size_t{0}));
-           it != keys.end() && it->first == key; ++it)
-        if (owner[it->second] == kNone) owner[it->second] = t;
-    }
+  const std::vector<std::uint32_t> tet_faces = detail::tet_faces_of(mesh.tets, mesh.boundary_faces);
   mid.reserve(mesh.boundary_faces.size());
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    if (owner[f] == kNone) throw InvalidInput("tet mesh: boundary face " + std::to_string(f) + " is no face of any tet");
-    const std::size_t t = owner[f];
+    if (tet_faces[f] == detail::kNoTetFace)
+      throw InvalidInput("tet mesh: boundary face " + std::to_string(f) + " is no face of any tet");
+    const std::size_t t = tet_faces[f] / 4;
     mid.push_back(face_edge_nodes(mesh.tets[t], mesh.tet_edge_nodes[t], mesh.boundary_faces[f]));
   }
   return mid;
