@@ -92,6 +92,10 @@ void check_output_files(const std::vector<std::string>& inputs, const std::vecto
   for (const std::string& output : output_files) check_writable(output, folders);
 }
 
+void note_taken_back(const std::vector<TakenBack>& taken_back) {
+  for (const TakenBack& t : taken_back) std::cerr << "meshprep: note: " << describe(t) << '\n';
+}
+
 CLI::Validator positive() {
   return CLI::Validator(
       [](std::string& value) {

@@ -2,6 +2,7 @@
 // Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
 
 #include "meshprep/core/io.h"
+#include "meshprep/core/taken_back.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/improve_tets.h"
@@ -54,6 +55,10 @@ void check_output_files(const std::vector<std::string>& inputs, const std::vecto
 /// fewer but some, says so on stderr (the output is still written: the input had them).
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
+
+/// One note on stderr per piece of work a guard took back ("meshprep: note: enhance: remeshing
+/// taken back (self-intersection): ..."); the --json record lists them under guards_taken_back.
+void note_taken_back(const std::vector<TakenBack>& taken_back);
 
 /// A validator for a number that must be above 0: "must be positive, not 0" (CLI11's own
 /// PositiveNumber prints its range to DBL_MAX's 309 digits).

@@ -39,6 +39,7 @@ int run_enhance(EnhanceOptions o) {
   ProgressBar bar("enhance");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const EnhanceResult result = run_stage_on(o.input, [&] { return enhance(loaded.mesh, reference.get(), o.params); });
+  note_taken_back(result.taken_back);
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 

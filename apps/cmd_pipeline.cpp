@@ -176,6 +176,7 @@ int run_pipeline_command(const PipelineOptions& o) {
     observer.stage_finished = [&bar, &log](const StageRecord& s) {
       bar.reset();
       log << stage_line(s) << std::endl;
+      for (const TakenBack& t : s.taken_back) log << "  " << describe(t) << std::endl;
     };
   }
   arm_timeout(o.timeout);

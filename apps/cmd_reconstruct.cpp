@@ -47,6 +47,7 @@ int run_reconstruct(const ReconstructOptions& o) {
     return o.adaptive ? reconstruct_adaptive(input.points, adaptive) : reconstruct_surface(input.points, params);
   });
   bar.finish();
+  note_taken_back(result.taken_back);
   if (result.mesh.triangles.empty())
     throw WorkFailed(o.input + ": every triangle is farther than --max-gap " + std::to_string(result.max_gap) +
                      " from the samples; nothing written");

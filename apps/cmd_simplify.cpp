@@ -62,6 +62,7 @@ int run_simplify(const SimplifyOptions& o) {
     return enhanced.simplify;
   });
   bar.finish();
+  note_taken_back(result.taken_back);
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 
   QualityParams quality_params;

@@ -38,6 +38,7 @@ int run_smooth(SmoothOptions o) {
   ProgressBar bar("smooth");
   o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
   const SmoothResult result = run_stage_on(o.input, [&] { return smooth(loaded.mesh, o.params); });
+  note_taken_back(result.taken_back);
   bar.finish();
   const TriangleSoup output = soup_from_mesh(loaded.mesh);
 

@@ -1,5 +1,6 @@
 #include "tet_improvement.h"
 
+#include "cli_common.h"
 #include "interrupt.h"
 
 #include "meshprep/report/number_format.h"
@@ -20,6 +21,7 @@ ImproveResult run_improvement(TetMesh& tets, const ImproveParams& params, nlohma
   p.cancelled = stop_requested;
   const ImproveResult result = improve_tets(tets, p);
   json["improvement"] = to_json(result);
+  note_taken_back(result.taken_back);
   return result;
 }
 

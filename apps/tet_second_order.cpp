@@ -1,5 +1,6 @@
 #include "tet_second_order.h"
 
+#include "cli_common.h"
 #include "cli_parameters.h"
 
 #include "meshprep/fem/fem_parameters.h"
@@ -28,6 +29,7 @@ QuadraticResult make_second_order(TetMesh& tets, const TriangleSoup* reference, 
   const TriangleSoup own_boundary = reference ? TriangleSoup{} : boundary_surface(tets);
   const QuadraticResult result = make_quadratic(tets, reference ? reference : &own_boundary);
   json["second_order"] = to_json(result);
+  note_taken_back(result.taken_back);
   return result;
 }
 

@@ -15,6 +15,8 @@ Usage: cli_meshes.py NAME...   (NAME.off is written for each)
   plate      the cube scaled to 100 x 100 x 0.05 (a sheet part thinner than the weld distance)
   double_sided the cube with every face listed twice, once per orientation
   collapsed  50 faces whose three corners are one point each (zero area)
+  wavy       two sheets z = 0.3 sin 3x cos 2y over [0, 3]^2, 0.002 apart, 16 x 16 squares each,
+             closed by a rim (test_meshes.h: thin_wavy_plate): a remeshing pierces one sheet with the other
 """
 import math
 import sys
@@ -35,6 +37,24 @@ def grid(n, height, skip=()):
     return pts, tris
 
 
+def wavy_plate(n, gap):
+    pts = [(3.0 * i / n, 3.0 * j / n, 0.3 * math.sin(9.0 * i / n) * math.cos(6.0 * j / n) + sheet * gap)
+           for sheet in (0, 1) for j in range(n + 1) for i in range(n + 1)]
+    def at(sheet, i, j):
+        return sheet * (n + 1) * (n + 1) + j * (n + 1) + i
+    tris = []
+    for j in range(n):
+        for i in range(n):
+            tris += [(at(0, i, j), at(0, i + 1, j + 1), at(0, i + 1, j)), (at(0, i, j), at(0, i, j + 1), at(0, i + 1, j + 1)),
+                     (at(1, i, j), at(1, i + 1, j), at(1, i + 1, j + 1)), (at(1, i, j), at(1, i + 1, j + 1), at(1, i, j + 1))]
+    rim = ([(i, 0) for i in range(n)] + [(n, j) for j in range(n)] + [(i, n) for i in range(n, 0, -1)] +
+           [(0, j) for j in range(n, 0, -1)])
+    for k, (i0, j0) in enumerate(rim):
+        i1, j1 = rim[(k + 1) % len(rim)]
+        tris += [(at(0, i0, j0), at(0, i1, j1), at(1, i1, j1)), (at(0, i0, j0), at(1, i1, j1), at(1, i0, j0))]
+    return pts, tris
+
+
 def meshes():
     Q = [(x + 0.5, y + 0.25, z + 0.3) for (x, y, z) in P]
     return {
@@ -52,6 +72,7 @@ def meshes():
         "double_sided": (P, T + [(a, c, b) for (a, b, c) in T]),
         "collapsed": ([(float(k), 0.0, 0.0) for k in range(50) for _ in range(3)],
                       [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(50)]),
+        "wavy": wavy_plate(16, 0.002),
     }
 
 

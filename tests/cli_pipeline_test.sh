@@ -263,6 +263,26 @@ one_line "repair, zero-area faces" "collapsed.off: repair: no face is left of 50
 [ ! -e collapsed_repaired.off ] && ok || bad "an empty repair was written"
 "$bin" pipeline collapsed.off -o out_collapsed --repair > /dev/null 2> err.txt; expect_exit "pipeline --repair, zero-area faces" 2 $?
 one_line "pipeline --repair, zero-area faces" "collapsed.off: repair: no face is left of 50"
+# Issue 45, item 5: work a guard takes back is said, with its figures, under one key in
+# report.json, in the HTML and on the terminal: the thin wavy plate's remeshing pierces one
+# sheet with the other and is taken back.
+python3 "$here/cli_meshes.py" wavy
+echo '{"enhance": {"remesh": "on"}, "tetrahedralize": {"enabled": false}}' > remesh_on.json
+"$bin" pipeline wavy.off -o out_wavy --config remesh_on.json > wavy.txt 2> err.txt; expect_exit "pipeline, remeshing taken back" 0 $?
+python3 -c "
+import json; j = json.load(open('out_wavy/report.json'))
+t = [g for g in j['guards_taken_back'] if g['work'] == 'remeshing']
+assert len(t) == 1 and t[0]['stage'] == 'enhance' and t[0]['guard'] == 'self-intersection', j['guards_taken_back']
+assert t[0]['before']['self_intersections'] > 0 and t[0]['after']['self_intersections'] == 0, t
+assert j['quality']['self_intersections'] == 0" && ok || bad "report.json: the remeshing taken back"
+grep -q "^  enhance: remeshing taken back (self-intersection)" wavy.txt && ok || bad "terminal: the remeshing taken back"
+grep -q "Work the guards took back" out_wavy/report.html && grep -q "remeshing" out_wavy/report.html && ok ||
+  bad "report.html: the remeshing taken back"
+"$bin" enhance wavy.off -o wavy_enhanced.off --remesh on --json wavy_enhance.json > /dev/null 2> err.txt
+grep -q "^meshprep: note: enhance: remeshing taken back" err.txt &&
+  python3 -c "import json; assert json.load(open('wavy_enhance.json'))['guards_taken_back']" && ok ||
+  bad "enhance: the remeshing taken back, on stderr and in --json"
+
 # Issue 45, item 13: two runs writing one folder at once, in two formats (each removes the other
 # format's tets): the folder ends with one run's outputs whole, never without a tets file.
 python3 "$here/cli_meshes.py" cube

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace meshprep::test {
 
@@ -151,6 +152,36 @@ TriangleSoup subdivided_cube(int n) {
           }
         }
   return soup;
+}
+
+TriangleSoup thin_wavy_plate(int n, double gap) {
+  TriangleSoup s;
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double x = 3.0 * i / n, y = 3.0 * j / n;
+        s.points.emplace_back(x, y, 0.3 * std::sin(3 * x) * std::cos(2 * y) + sheet * gap);
+      }
+  auto id = [&](int sheet, int i, int j) { return static_cast<std::uint32_t>(sheet * (n + 1) * (n + 1) + j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      s.triangles.push_back({id(0, i, j), id(0, i + 1, j + 1), id(0, i + 1, j)});  // bottom, facing down
+      s.triangles.push_back({id(0, i, j), id(0, i, j + 1), id(0, i + 1, j + 1)});
+      s.triangles.push_back({id(1, i, j), id(1, i + 1, j), id(1, i + 1, j + 1)});  // top, facing up
+      s.triangles.push_back({id(1, i, j), id(1, i + 1, j + 1), id(1, i, j + 1)});
+    }
+  std::vector<std::pair<int, int>> rim;
+  for (int i = 0; i < n; ++i) rim.emplace_back(i, 0);
+  for (int j = 0; j < n; ++j) rim.emplace_back(n, j);
+  for (int i = n; i > 0; --i) rim.emplace_back(i, n);
+  for (int j = n; j > 0; --j) rim.emplace_back(0, j);
+  for (std::size_t k = 0; k < rim.size(); ++k) {
+    const auto [i0, j0] = rim[k];
+    const auto [i1, j1] = rim[(k + 1) % rim.size()];
+    s.triangles.push_back({id(0, i0, j0), id(0, i1, j1), id(1, i1, j1)});
+    s.triangles.push_back({id(0, i0, j0), id(1, i1, j1), id(1, i0, j0)});
+  }
+  return s;
 }
 
 }  // namespace meshprep::test

@@ -32,6 +32,11 @@ TriangleSoup fan_triangulated_polygon(int corners);
 /// whose side is one ring of quads split in two: 4 corners - 4 faces.
 TriangleSoup cylinder_with_fan_caps(int corners);
 
+/// A closed wavy plate: two parallel sheets z = 0.3 sin 3x cos 2y (+ gap) over [0, 3]^2, n x n
+/// squares each, closed by a rim. Coarse chords of one sheet pierce the other when the gap is
+/// smaller than their sagitta.
+TriangleSoup thin_wavy_plate(int n, double gap);
+
 /// `soup` translated by t.
 TriangleSoup translated(TriangleSoup soup, const Vec3& t);
 

@@ -7,6 +7,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/tet_boundary.h"
+#include "meshprep/quality/json_values.h"
 #include "meshprep/quality/triangle_bvh.h"
 
 #include <tbb/blocked_range.h>
@@ -184,6 +185,13 @@ QuadraticResult make_quadratic(TetMesh& mesh, const TriangleSoup* reference) {
     }
   }
 
+  if (result.straight_inverting > 0)
+    result.taken_back.push_back(
+        {"second_order", "positive Jacobian", "curved boundary edges", result.straight_inverting,
+         "placing their mid-edge node on the reference would fold a tet (the Bezier bound of det J); they are kept "
+         "straight",
+         {{"curved_edges", static_cast<double>(result.curved_edges + result.straight_inverting)}},
+         {{"curved_edges", static_cast<double>(result.curved_edges)}}});
   result.min_scaled_jacobian = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     const std::array<Vec3, 10> x = detail::tet_nodes(mesh, t);
@@ -243,6 +251,7 @@ nlohmann::ordered_json to_json(const QuadraticResult& r) {
           {"max_offset_relative", r.max_offset_relative},
           {"min_scaled_jacobian", r.min_scaled_jacobian},
           {"nonpositive_jacobian_tets", r.nonpositive_jacobian_tets},
+          {kGuardsTakenBackKey, json_taken_back(r.taken_back)},
           {"seconds", r.seconds}};
 }
 

@@ -176,6 +176,7 @@ class Run {
                       {"max_gap", reconstruction.max_gap},
                       {"gap_faces_left_out", reconstruction.gap_triangles},
                       {"filled_faces", reconstruction.filled_triangles}};
+    record.taken_back = reconstruction.taken_back;
     result_.input_surface = std::move(reconstruction.mesh);
     mesh_ = mesh_from_soup(result_.input_surface);  // manifold by construction
     record.faces_before = mesh_.n_faces();
@@ -352,6 +353,7 @@ class Run {
     record.details =
         picked(to_json(s), {"target_faces", "reached_target", "collapses", "intersection_retries", "stuck_restarts"});
     if (!s.reached_target) record.note = "target " + std::to_string(s.target_faces) + " faces not reached";
+    record.taken_back = s.taken_back;
     measure(record);
     finish(std::move(record));
   }
@@ -368,6 +370,7 @@ class Run {
                       {"feature_line_vertices", s.feature_line_vertices},
                       {"corner_vertices", s.corner_vertices}};
     record.note = std::to_string(s.iterations) + " iteration(s)";
+    record.taken_back = s.taken_back;
     measure(record);
     finish(std::move(record));
   }
@@ -384,6 +387,7 @@ class Run {
     record.details["smallest_angle_after_deg"] = e.after.min_angle_deg;
     record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";
     if (e.cap_flips > 0) record.note += ", " + std::to_string(e.cap_flips) + " cap(s) flipped";
+    record.taken_back = e.taken_back;
     measure(record);
     finish(std::move(record));
   }
@@ -477,6 +481,7 @@ class Run {
                   " deg (" + r.stopped_by + ")";
     const std::string limit = surface_limit_note(r, params.goal_min_dihedral_deg);
     if (!limit.empty()) record.note += "; " + limit;
+    record.taken_back = r.taken_back;
     result_.improvement = r;
     finish(std::move(record));
   }
@@ -506,6 +511,7 @@ class Run {
                   std::to_string(r.quadratic.straight_inverting) + " left straight (a tet would fold); Hausdorff to the input " +
                   figure(100 * r.hausdorff_linear_relative) + " -> " + figure(100 * r.hausdorff_second_order_relative) +
                   " % of the diagonal";
+    record.taken_back = r.quadratic.taken_back;
     result_.second_order = r;
     finish(std::move(record));
   }

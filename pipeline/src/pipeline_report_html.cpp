@@ -95,6 +95,25 @@ std::string stage_table(const PipelineResult& r) {
          "; every stage is measured against the input, not against the stage before.</p>\n";
 }
 
+// Every piece of work a stage's guard took back (report.json: guards_taken_back), under the stages.
+std::string taken_back_section(const PipelineResult& r) {
+  std::string rows;
+  for (const StageRecord& s : r.stages)
+    for (const TakenBack& t : s.taken_back) {
+      std::string figures;
+      for (const GuardFigure& before : t.before)
+        for (const GuardFigure& after : t.after)
+          if (after.name == before.name)
+            figures += (figures.empty() ? "" : "; ") + before.name + " " + format_number(before.value, 4) + " \u2192 " +
+                       format_number(after.value, 4);
+      rows += row({t.stage, std::to_string(t.count) + " " + t.work, t.guard, t.reason, figures});
+    }
+  if (rows.empty()) return "<p class=\"note\">No guard took any stage's work back.</p>\n";
+  return "<h3>Work the guards took back</h3>\n<table>\n" +
+         row({"stage", "work", "guard", "why, and what was kept", "figures (as the work left them \u2192 as kept)"}, "th") +
+         rows + "</table>\n";
+}
+
 std::string shape_histograms(const PipelineResult& r) {
   return "<h2>Triangle quality: input and output</h2>\n<div class=\"histograms\">\n" +
          html::radius_ratio_histogram(r.input_quality, "Radius ratio, input") +
@@ -258,7 +277,7 @@ std::string pipeline_report_html(const PipelineResult& r, const PipelineConfig& 
   intro << "; " << format_fixed(r.seconds, 1) << " s in all.";
   return html::page_start(title) + "<h1>meshprep pipeline: <span class=\"file\">" + escape(r.input) + "</span></h1>\n" +
          headline(r, config) + "<p>" + escape(intro.str()) + "</p>\n" + readiness_section(r, config) + "<h2>The final surface</h2>\n" +
-         surface_picture_html(r.surface, r.final_quality) + stage_table(r) + shape_histograms(r) +
+         surface_picture_html(r.surface, r.final_quality) + stage_table(r) + taken_back_section(r) + shape_histograms(r) +
          patch_section(r) + tet_section(r, config) + config_section(config) +
          html::page_end("meshprep " MESHPREP_VERSION " pipeline report.");
 }

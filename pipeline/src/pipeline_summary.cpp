@@ -97,6 +97,9 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   Json stages = Json::array();
   for (const StageRecord& s : result.stages) stages.push_back(stage_json(s));
   json["stages"] = stages;
+  std::vector<TakenBack> taken_back;  // every stage's, in the order they ran
+  for (const StageRecord& s : result.stages) taken_back.insert(taken_back.end(), s.taken_back.begin(), s.taken_back.end());
+  json[kGuardsTakenBackKey] = json_taken_back(taken_back);
   json["input_quality"] = quality_json(result.input_quality);
   json["quality"] = quality_json(result.final_quality);
   json["patches"] = patches_json(result);

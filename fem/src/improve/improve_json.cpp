@@ -1,6 +1,7 @@
 // How a tet improvement run is written: the note on a limit the surface sets, and the JSON record.
 #include "meshprep/fem/improve_tets.h"
 
+#include "meshprep/quality/json_values.h"
 #include "meshprep/report/number_format.h"
 
 #include <nlohmann/json.hpp>
@@ -45,7 +46,8 @@ nlohmann::ordered_json to_json(const ImproveResult& r) {
           {"seconds", r.seconds},
           {"surface_bound_deg", r.surface_bound_deg},
           {"limiting_edge_count", r.limiting_edge_count},
-          {"limiting_edges", limiting}};
+          {"limiting_edges", limiting},
+          {kGuardsTakenBackKey, json_taken_back(r.taken_back)}};
 }
 
 }  // namespace meshprep

@@ -125,9 +125,16 @@ class Schedule {
       const double worst_after = worst();
       if (worst_after < worst_before || (worst_after == worst_before && below_goal() >= below)) {
         const std::size_t passes = result_.passes;
+        const std::size_t below_after = below_goal();
         mesh_ = before_detour;
         result_ = result_before;
         result_.passes = passes;
+        result_.taken_back.push_back(
+            {"improve", "no gain", "detour", 1,
+             "working towards a goal " + std::to_string(static_cast<int>(kEscalationDeg * round)) +
+                 " deg higher around the stuck tets ended no better; the tets before it are kept",
+             {{"tets_below_goal", static_cast<double>(below_after)}, {"worst_quality", worst_after}},
+             {{"tets_below_goal", static_cast<double>(below)}, {"worst_quality", worst_before}}});
         failed_.clear();
         return;
       }

@@ -15,7 +15,7 @@ ReconstructResult reconstruct_adaptive(const std::vector<Vec3>& points, const Ad
   SimplifyParams simplify_params;
   simplify_params.keep_ratio = 0.25;
   simplify_params.progress = params.progress;
-  simplify(mesh, simplify_params);
+  result.taken_back = simplify(mesh, simplify_params).taken_back;
   result.mesh = soup_from_mesh(mesh);
   result.vertex_variation.clear();
   for (const Vec3& p : result.mesh.points) {

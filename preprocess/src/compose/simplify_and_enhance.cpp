@@ -54,7 +54,9 @@ SimplifyAndEnhanceResult simplify_and_enhance(TriMesh& mesh, const SimplifyAndEn
     total.polish_moves += r.polish_moves;
     total.fit_moves += r.fit_moves;
     total.intersection_retries += r.intersection_retries;
+    total.taken_back.insert(total.taken_back.end(), r.taken_back.begin(), r.taken_back.end());
     const EnhanceResult e = enhance(mesh, &original, enhancement);
+    total.taken_back.insert(total.taken_back.end(), e.taken_back.begin(), e.taken_back.end());
     ++result.stages;
     result.rounds += e.kept_round;
     result.flips += e.flips;

@@ -121,20 +121,38 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   // The estimate can fall short (a thin part's wedges): splits stopped at the limit leave a
   // half-refined surface, so the field is coarsened and the remeshing run again from the input.
   detail::RemeshCounts counts;
+  const auto taken_back = [&](const std::string& guard, const std::string& reason, std::size_t intersections) {
+    const QualityTail remeshed = detail::measure_tail(mesh, params.target_min_angle_deg);
+    result.taken_back.push_back(
+        {"enhance", guard, "remeshing", 1, reason + "; the input's own faces are enhanced instead",
+         {{"faces", static_cast<double>(mesh.n_faces())},
+          {"faces_below_target_angle", remeshed.under_target_fraction},
+          {"self_intersections", static_cast<double>(intersections)}},
+         {{"faces", static_cast<double>(before.n_faces())},
+          {"faces_below_target_angle", result.before.under_target_fraction},
+          {"self_intersections", static_cast<double>(allowed_intersections)}}});
+    mesh = before;
+    return false;
+  };
   for (int attempt = 0;; ++attempt) {
     counts = detail::remesh_to_sizing(mesh, constraints, sizing, rules);
     if (!counts.stopped_at_max_faces) break;
+    if (attempt + 1 == kRemeshAttempts)
+      return taken_back("face limit",
+                        "its splits reached the face limit (" + std::to_string(rules.max_faces) + ") " +
+                            std::to_string(kRemeshAttempts) + " times, the sizing field coarsened each time",
+                        find_self_intersections(MeshSoupView(mesh)).count);
     mesh = before;
-    if (attempt + 1 == kRemeshAttempts) return false;
     sizing.coarsen(kCoarsening);
   }
   result.sizing_shortest = sizing.shortest() / diagonal;
   result.sizing_base = sizing.base_length() / diagonal;
   result.sizing_capped = sizing.capped();
-  if (find_self_intersections(MeshSoupView(mesh)).count > allowed_intersections) {
-    mesh = before;
-    return false;
-  }
+  if (const std::size_t found = find_self_intersections(MeshSoupView(mesh)).count; found > allowed_intersections)
+    return taken_back("self-intersection",
+                      "it made the surface cross itself at " + std::to_string(found) + " face pairs (the input: " +
+                          std::to_string(allowed_intersections) + ")",
+                      found);
   result.remeshed = true;
   result.remesh_splits = counts.splits;
   result.remesh_collapses = counts.collapses;
@@ -221,7 +239,11 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   std::vector<double> allowed_distance;  // of each probe to the mesh
   for (const auto& hit : coverage)
     allowed_distance.push_back(std::max(round_deviation, std::sqrt(hit.squared_distance)));
-  QualityTail best = result.before;
+  QualityTail best = result.before, last = result.before;
+  struct {
+    std::size_t rounds = 0, edits = 0, worst_intersections = 0;
+  } cleanup_taken_back;  // rounds whose flips, collapses and splits made the surface cross itself
+  detail::UndoneMoves undone;
   std::size_t flips_made = 0, cap_flips_made = 0, removed_vertices = 0, split_edges = 0;
   TriMesh best_mesh = mesh;
   int stale_rounds = 0;
@@ -235,8 +257,13 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
       const std::size_t removed = detail::collapse_for_angles(mesh, constraints, rules, removal_budget - removed_vertices);
       const std::size_t split_budget = (face_budget + 2 * (removed_vertices + removed)) / 2 - split_edges;
       const std::size_t splits = detail::split_for_angles(mesh, constraints, rules, split_budget);
-      if (flips + cap_flips + removed + splits > 0 && find_self_intersections(MeshSoupView(mesh)).count > allowed_intersections) {
+      const std::size_t edits = flips + cap_flips + removed + splits;
+      const std::size_t found = edits > 0 ? find_self_intersections(MeshSoupView(mesh)).count : 0;
+      if (found > allowed_intersections) {
         mesh = before_cleanup;
+        ++cleanup_taken_back.rounds;
+        cleanup_taken_back.edits += edits;
+        cleanup_taken_back.worst_intersections = std::max(cleanup_taken_back.worst_intersections, found);
       } else {
         flips_made += flips;
         cap_flips_made += cap_flips;
@@ -254,9 +281,10 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
         mesh.set_point(v, to_openmesh(constraints.project(v, moved[i])));
     }
     fit_surface_vertices(mesh, constraints, min_angle_cosine, &before);
-    result.undone_moves += guards.enforce(mesh);
+    undone += guards.enforce(mesh);
     if (params.progress) params.progress(static_cast<double>(round) / static_cast<double>(params.iterations));
     const QualityTail now = detail::measure_tail(mesh, params.target_min_angle_deg);
+    last = now;
     if (!detail::improves(now, best, params.target_min_angle_deg)) {
       if (++stale_rounds == kStaleRounds) break;
       continue;  // from this round's mesh: its flips and splits may open the way
@@ -276,9 +304,30 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   // fold as well as make the surface cross itself).
   const detail::MoveGuards final_guards(mesh, constraints, probes, allowed_distance, allowed_intersections, round_deviation);
   fit_surface_vertices(mesh, constraints, min_angle_cosine);
-  result.undone_moves += final_guards.enforce(mesh);
+  undone += final_guards.enforce(mesh);
   require_finite_points(mesh, "enhance");
   result.after = detail::measure_tail(mesh, params.target_min_angle_deg);
+  result.undone_moves = undone.total();
+  if (cleanup_taken_back.rounds > 0)
+    result.taken_back.push_back(
+        {"enhance", "self-intersection", "rounds' flips, collapses and splits", cleanup_taken_back.rounds,
+         std::to_string(cleanup_taken_back.edits) + " edits made the surface cross itself; each round went on from its start",
+         {{"self_intersections", static_cast<double>(cleanup_taken_back.worst_intersections)}},
+         {{"self_intersections", static_cast<double>(allowed_intersections)}}});
+  if (undone.total() > 0)
+    result.taken_back.push_back(
+        {"enhance", "move guards", "vertex moves", undone.total(),
+         std::to_string(undone.bad_faces) + " turned, folded or pulled a face past the bound, " +
+             std::to_string(undone.uncovering) + " uncovered the reference, " + std::to_string(undone.intersections) +
+             " made the surface cross itself",
+         {{"vertex_moves", static_cast<double>(undone.moved)}},
+         {{"vertex_moves", static_cast<double>(undone.moved - undone.total())}}});
+  if (result.kept_round == 0 && result.rounds > 0)
+    result.taken_back.push_back(
+        {"enhance", "no gain", "rounds", result.rounds,
+         "no round improved the faces' angle statistic (the tail of their quality); the surface the rounds began from is kept",
+         {{"faces_below_target_angle", last.under_target_fraction}, {"min_angle_deg", last.min_angle_deg}},
+         {{"faces_below_target_angle", best.under_target_fraction}, {"min_angle_deg", best.min_angle_deg}}});
   result.faces_after = mesh.n_faces();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

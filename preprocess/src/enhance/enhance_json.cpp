@@ -1,5 +1,6 @@
 #include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/preprocess/enhance/enhance_parameters.h"
+#include "meshprep/quality/json_values.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,7 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
   json["line_vertices"] = result.line_vertices;
   json["fixed_vertices"] = result.fixed_vertices;
   json["undone_moves"] = result.undone_moves;
+  json[kGuardsTakenBackKey] = json_taken_back(result.taken_back);
   json["remesh"] = {{"remeshed", result.remeshed},
                     {"splits", result.remesh_splits},
                     {"collapses", result.remesh_collapses},

@@ -73,17 +73,28 @@ std::size_t MoveGuards::put_back(TriMesh& mesh, TriMesh::FaceHandle f) const {
   return undone;
 }
 
-std::size_t MoveGuards::enforce(TriMesh& mesh) const {
+UndoneMoves& UndoneMoves::operator+=(const UndoneMoves& other) {
+  moved += other.moved;
+  bad_faces += other.bad_faces;
+  uncovering += other.uncovering;
+  intersections += other.intersections;
+  return *this;
+}
+
+UndoneMoves MoveGuards::enforce(TriMesh& mesh) const {
+  UndoneMoves undone;
   std::vector<char> dirty(mesh.n_vertices(), 0);  // vertices whose position changed since the last look
-  for (const auto v : mesh.vertices()) dirty[static_cast<std::size_t>(v.idx())] = moved(mesh, v);
+  for (const auto v : mesh.vertices()) {
+    dirty[static_cast<std::size_t>(v.idx())] = moved(mesh, v);
+    undone.moved += moved(mesh, v);
+  }
   std::vector<std::size_t> nearest_face(coverage_before_.size());
   for (std::size_t i = 0; i < nearest_face.size(); ++i) nearest_face[i] = coverage_before_[i].face;
-  std::size_t undone = 0;
   for (int pass = 0; pass < 8; ++pass) {
     const std::vector<TriMesh::Point> start(mesh.points(), mesh.points() + mesh.n_vertices());
-    undone += undo_bad_faces(mesh, dirty);
-    undone += undo_uncovering(mesh, dirty, nearest_face);
-    undone += undo_new_intersections(mesh, before_, allowed_intersections_);
+    undone.bad_faces += undo_bad_faces(mesh, dirty);
+    undone.uncovering += undo_uncovering(mesh, dirty, nearest_face);
+    undone.intersections += undo_new_intersections(mesh, before_, allowed_intersections_);
     bool changed = false;
     for (const auto v : mesh.vertices()) {
       const std::size_t i = static_cast<std::size_t>(v.idx());

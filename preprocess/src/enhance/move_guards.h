@@ -26,6 +26,16 @@ std::vector<TriangleBvh::Hit> reference_coverage(const TriMesh& mesh, const std:
 /// - makes the surface cross itself beyond the pairs the input had.
 /// Putting a vertex back can upset another guard (a face half old, half new), so the guards run
 /// in passes until none puts anything back; each pass measures only what the previous one changed.
+/// What enforce() found: the vertices the round moved, and those each guard put back.
+struct UndoneMoves {
+  std::size_t moved = 0;          ///< vertices the round moved
+  std::size_t bad_faces = 0;      ///< put back: a face turned, folded or left the bound
+  std::size_t uncovering = 0;     ///< put back: a probe of the reference left too far from the mesh
+  std::size_t intersections = 0;  ///< put back: the surface crossed itself
+  std::size_t total() const { return bad_faces + uncovering + intersections; }
+  UndoneMoves& operator+=(const UndoneMoves& other);
+};
+
 class MoveGuards {
  public:
   /// `mesh` as the round found it (before any move); its topology must not change until enforce().
@@ -33,8 +43,7 @@ class MoveGuards {
   MoveGuards(const TriMesh& mesh, const SurfaceConstraints& constraints, const std::vector<Vec3>& probes,
              const std::vector<double>& allowed_distance, std::size_t allowed_intersections, double max_deviation);
 
-  /// Returns the number of vertices put back.
-  std::size_t enforce(TriMesh& mesh) const;
+  UndoneMoves enforce(TriMesh& mesh) const;
 
  private:
   std::size_t undo_bad_faces(TriMesh& mesh, const std::vector<char>& dirty) const;

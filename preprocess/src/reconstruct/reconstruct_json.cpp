@@ -26,6 +26,7 @@ nlohmann::ordered_json to_json(const ReconstructResult& result, const Reconstruc
   json["fill_holes"] = params.fill_holes;
   json["filled_faces"] = result.filled_triangles;
   json["reference_normal"] = {result.normal.x(), result.normal.y(), result.normal.z()};
+  json[kGuardsTakenBackKey] = json_taken_back(result.taken_back);
   json["time_seconds"] = result.seconds;
   return json;
 }

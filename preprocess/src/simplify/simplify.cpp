@@ -178,6 +178,7 @@ void tighten_around_crossings(const TriMesh& simplified, const TriangleSoup& out
 void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyResult& result) {
   const TriangleSoup original = detail::in_spatial_order(soup_from_mesh(mesh));
   std::vector<double> error_cap(original.points.size(), std::numeric_limits<double>::infinity());
+  std::size_t first_crossings = 0;
   for (int attempt = 0;; ++attempt) {
     mesh = mesh_from_soup(original);  // (again on a restart: no copy of the input is kept)
     request_collapse_attributes(mesh);
@@ -186,7 +187,17 @@ void decimate_with_guards(TriMesh& mesh, const SimplifyParams& params, SimplifyR
     const std::vector<detail::Quadric> quadrics = decimate_once(mesh, params, original, error_cap, merged_into, result);
     const TriangleSoup output = soup_from_mesh(mesh);
     const SelfIntersections crossings = find_self_intersections(output);
-    if (crossings.count == 0 || attempt == kRetries) return;
+    if (attempt == 0) first_crossings = crossings.count;
+    if (crossings.count == 0 || attempt == kRetries) {
+      if (attempt > 0)
+        result.taken_back.push_back(
+            {"simplify", "self-intersection", "decimations", static_cast<std::size_t>(attempt),
+             "the output crossed itself where the input did not; each time the decimation started again from the "
+             "input with half the error allowed around the crossings",
+             {{"self_intersections", static_cast<double>(first_crossings)}},
+             {{"self_intersections", static_cast<double>(crossings.count)}}});
+      return;
+    }
     if (attempt == 0 && find_self_intersections(original, 1).count > 0) return;  // not ours to fix
     tighten_around_crossings(mesh, output, quadrics, crossings, attempt, merged_into, error_cap);
     const SimplifyResult counters = result;

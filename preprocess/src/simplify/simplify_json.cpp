@@ -1,4 +1,5 @@
 #include "meshprep/preprocess/simplify/simplify.h"
+#include "meshprep/quality/json_values.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,7 @@ nlohmann::ordered_json to_json(const SimplifyResult& result) {
                       {"max_error", result.rejected_error}};
   json["energy_evaluations"] = result.energy_evaluations;
   json["intersection_retries"] = result.intersection_retries;
+  json[kGuardsTakenBackKey] = json_taken_back(result.taken_back);
   json["reshapes"] = result.reshapes;
   json["stuck_restarts"] = result.stuck_restarts;
   json["queue_order"] = result.banded_queue ? "cost_bands" : "cost";

@@ -45,6 +45,13 @@ void restore_volume(TriMesh& mesh, double target) {
   mesh.release_vertex_normals();
 }
 
+// The vertices whose position differs from `before`.
+std::size_t count_moved(const TriMesh& mesh, const std::vector<TriMesh::Point>& before) {
+  std::size_t moved = 0;
+  for (const auto v : mesh.vertices()) moved += mesh.point(v) != before[static_cast<std::size_t>(v.idx())];
+  return moved;
+}
+
 }  // namespace
 
 SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
@@ -67,6 +74,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
     if (!result.input_self_intersections) result.input_self_intersections = find_self_intersections(input).count;
     return *result.input_self_intersections;
   };
+  std::size_t moved_vertices = 0;  // over the steps, for the guard's record
   if (params.method == SmoothMethod::Taubin) {
     taubin_smooth(mesh, params.iterations);
   } else if (params.method == SmoothMethod::Laplace) {
@@ -77,6 +85,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
       const std::vector<TriMesh::Point> start_of_step(mesh.points(), mesh.points() + mesh.n_vertices());
       const std::vector<Vec3> moved = rbf_smoothing_step(mesh, params, counts);
       for (const auto v : mesh.vertices()) mesh.set_point(v, to_openmesh(moved[static_cast<std::size_t>(v.idx())]));
+      moved_vertices += count_moved(mesh, start_of_step);
       result.undone_vertices += detail::undo_new_intersections(mesh, start_of_step, input_intersections);
       result.feature_line_vertices = counts.feature_line;
       result.corner_vertices = counts.corners;
@@ -94,9 +103,18 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params) {
     // kept up to the few vertices put back).
     const std::vector<TriMesh::Point> unrestored(mesh.points(), mesh.points() + mesh.n_vertices());
     restore_volume(mesh, *result.volume_before);
-    if (params.method == SmoothMethod::Rbf)
+    if (params.method == SmoothMethod::Rbf) {
+      moved_vertices += count_moved(mesh, unrestored);
       result.undone_vertices += detail::undo_new_intersections(mesh, unrestored, input_intersections);
+    }
   }
+  if (result.undone_vertices > 0)
+    result.taken_back.push_back({"smooth", "self-intersection", "vertex moves", result.undone_vertices,
+                                 "they made the surface cross itself beyond the input's " +
+                                     std::to_string(input_intersections()) +
+                                     " face pairs; those vertices stayed where the step found them",
+                                 {{"vertex_moves", static_cast<double>(moved_vertices)}},
+                                 {{"vertex_moves", static_cast<double>(moved_vertices - result.undone_vertices)}}});
   if (result.volume_before) result.volume_after = volume(mesh);
   for (const auto v : mesh.vertices())
     result.max_displacement =

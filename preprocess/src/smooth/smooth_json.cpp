@@ -35,6 +35,7 @@ nlohmann::ordered_json to_json(const SmoothResult& result, const SmoothParams& p
   json["volume_change_relative"] =
       result.volume_before ? json_number(*result.volume_after / *result.volume_before - 1) : nullptr;
   json["max_displacement"] = result.max_displacement;
+  json[kGuardsTakenBackKey] = json_taken_back(result.taken_back);
   json["time_seconds"] = result.seconds;
   return json;
 }

@@ -13,6 +13,7 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -117,6 +118,36 @@ TEST(Enhance, CubeEdgesAndCornersStay) {
   for (const Vec3& c : corners)
     for (int i = 0; i < 3; ++i) EXPECT_TRUE(c[i] == 0 || c[i] == n) << "a corner moved";
   EXPECT_EQ(find_self_intersections(soup_from_mesh(mesh)).count, 0u);
+}
+
+TEST(Enhance, ARemeshingThatCrossesItselfIsTakenBackAndSaidSo) {
+  // Two sheets 0.002 apart under a bound of 0.2 % of a diagonal of 4.3: the remeshing's faces may
+  // leave one sheet by more than the gap, so they pierce the other. The guard takes the remeshing
+  // back, and the result says so with the figures (taken_back.h), as --json and report.json do.
+  const TriangleSoup plate = test::thin_wavy_plate(16, 0.002);
+  ASSERT_EQ(find_self_intersections(plate).count, 0u);
+  TriMesh mesh = mesh_from_soup(plate);
+  EnhanceParams params;
+  params.remesh = EnhanceRemesh::On;
+  const EnhanceResult result = enhance(mesh, nullptr, params);
+  EXPECT_FALSE(result.remeshed);
+  EXPECT_EQ(find_self_intersections(soup_from_mesh(mesh)).count, 0u);
+  const auto remeshing = std::find_if(result.taken_back.begin(), result.taken_back.end(),
+                                      [](const TakenBack& t) { return t.work == "remeshing"; });
+  ASSERT_NE(remeshing, result.taken_back.end());
+  EXPECT_EQ(remeshing->stage, "enhance");
+  EXPECT_EQ(remeshing->guard, "self-intersection");
+  const auto figure = [](const std::vector<GuardFigure>& figures, const std::string& name) {
+    for (const GuardFigure& f : figures)
+      if (f.name == name) return f.value;
+    return -1.0;
+  };
+  EXPECT_GT(figure(remeshing->before, "self_intersections"), 0);
+  EXPECT_EQ(figure(remeshing->after, "self_intersections"), 0);
+  EXPECT_EQ(figure(remeshing->after, "faces"), static_cast<double>(plate.triangles.size()));
+  const nlohmann::ordered_json json = to_json(result, params);
+  ASSERT_TRUE(json.contains("guards_taken_back"));
+  EXPECT_EQ(json["guards_taken_back"].size(), result.taken_back.size());
 }
 
 TEST(Enhance, BoundaryCornersStay) {

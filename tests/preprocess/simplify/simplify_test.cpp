@@ -68,39 +68,6 @@ TriangleSoup spherical_cap(int rings, int sectors) {
   return s;
 }
 
-// A closed wavy plate: two parallel sheets z = 0.3 sin 3x cos 2y (+ gap) over [0, 3]^2, n x n
-// squares each, closed by a rim. Coarse chords of one sheet pierce the other when the gap is
-// smaller than their sagitta.
-TriangleSoup thin_wavy_plate(int n, double gap) {
-  TriangleSoup s;
-  for (int sheet = 0; sheet < 2; ++sheet)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        const double x = 3.0 * i / n, y = 3.0 * j / n;
-        s.points.emplace_back(x, y, 0.3 * std::sin(3 * x) * std::cos(2 * y) + sheet * gap);
-      }
-  auto id = [&](int sheet, int i, int j) { return static_cast<std::uint32_t>(sheet * (n + 1) * (n + 1) + j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      s.triangles.push_back({id(0, i, j), id(0, i + 1, j + 1), id(0, i + 1, j)});  // bottom, facing down
-      s.triangles.push_back({id(0, i, j), id(0, i, j + 1), id(0, i + 1, j + 1)});
-      s.triangles.push_back({id(1, i, j), id(1, i + 1, j), id(1, i + 1, j + 1)});  // top, facing up
-      s.triangles.push_back({id(1, i, j), id(1, i + 1, j + 1), id(1, i, j + 1)});
-    }
-  std::vector<std::pair<int, int>> rim;
-  for (int i = 0; i < n; ++i) rim.emplace_back(i, 0);
-  for (int j = 0; j < n; ++j) rim.emplace_back(n, j);
-  for (int i = n; i > 0; --i) rim.emplace_back(i, n);
-  for (int j = n; j > 0; --j) rim.emplace_back(0, j);
-  for (std::size_t k = 0; k < rim.size(); ++k) {
-    const auto [i0, j0] = rim[k];
-    const auto [i1, j1] = rim[(k + 1) % rim.size()];
-    s.triangles.push_back({id(0, i0, j0), id(0, i1, j1), id(1, i1, j1)});
-    s.triangles.push_back({id(0, i0, j0), id(1, i1, j1), id(1, i0, j0)});
-  }
-  return s;
-}
-
 double boundary_length(const TriMesh& mesh) {
   double length = 0;
   for (const auto e : mesh.edges())
@@ -224,7 +191,7 @@ TEST(Simplify, OpenDiskKeepsItsBoundaryLoop) {
 TEST(Simplify, AThinPlateIsNeverSimplifiedIntoItself) {
   // 0.002 apart, edges of 0.075: at 10 % the chords of one sheet would cross the other (the first
   // attempt gives ~900 intersecting pairs). The output is checked and the error bounded where it crosses.
-  const TriangleSoup plate = thin_wavy_plate(40, 0.002);
+  const TriangleSoup plate = test::thin_wavy_plate(40, 0.002);
   ASSERT_EQ(analyze_quality(plate).self_intersections, 0u);
   SimplifyParams p;
   p.keep_ratio = 0.1;
@@ -232,11 +199,20 @@ TEST(Simplify, AThinPlateIsNeverSimplifiedIntoItself) {
   const QualityReport r = simplified_quality(plate, p, &result);
   EXPECT_GE(result.intersection_retries, 1u);
   EXPECT_EQ(r.self_intersections, 0u);
+  // The restarts are work taken back, and said so (taken_back.h) with the crossings they undid.
+  ASSERT_EQ(result.taken_back.size(), 1u);
+  const TakenBack& restarts = result.taken_back.front();
+  EXPECT_EQ(restarts.stage, "simplify");
+  EXPECT_EQ(restarts.count, result.intersection_retries);
+  ASSERT_EQ(restarts.before.size(), 1u);
+  EXPECT_GT(restarts.before.front().value, 0);
+  EXPECT_EQ(restarts.after.front().value, 0);
   EXPECT_TRUE(r.closed);
   EXPECT_EQ(*r.genus, 0);
   // With room between the sheets the same plate simplifies to the target without a retry.
-  const QualityReport wide = simplified_quality(thin_wavy_plate(40, 0.5), p, &result);
+  const QualityReport wide = simplified_quality(test::thin_wavy_plate(40, 0.5), p, &result);
   EXPECT_EQ(result.intersection_retries, 0u);
+  EXPECT_TRUE(result.taken_back.empty());
   EXPECT_TRUE(result.reached_target);
   EXPECT_EQ(wide.self_intersections, 0u);
 }

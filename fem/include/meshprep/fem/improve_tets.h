@@ -31,6 +31,7 @@
 /// one the two boundary faces force, or one of several has a dihedral angle <= alpha / 2. Edges
 /// where the better of the two is below the goal are listed with that bound.
 
+#include "meshprep/core/taken_back.h"
 #include "meshprep/fem/tet_mesh.h"
 
 #include <nlohmann/json.hpp>
@@ -84,6 +85,9 @@ struct ImproveResult {
   /// The lowest bound of limiting_edges (the goal when there are none): the best smallest
   /// dihedral angle the boundary allows, as far as these edges tell.
   double surface_bound_deg = 0;
+  /// A detour towards a higher goal that ended no better, taken back (worst_quality: the smallest
+  /// of the tets' biased smallest dihedral sines, improve_tets.cpp).
+  std::vector<TakenBack> taken_back;
 };
 
 /// \throws InvalidInput "improve: <field> must be ..." if a goal is outside its range (NaN never is

@@ -14,6 +14,7 @@
 /// non-positive Jacobian where the linear mesh had none.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/taken_back.h"
 #include "meshprep/fem/tet_mesh.h"
 
 #include <nlohmann/json.hpp>
@@ -60,6 +61,7 @@ struct QuadraticResult {
   /// already was flat or inverted.
   std::size_t nonpositive_jacobian_tets = 0;
   double seconds = 0;
+  std::vector<TakenBack> taken_back;  ///< the edges kept straight because curving would fold a tet
 };
 
 /// Makes `mesh` second-order in place: one new point per edge, appended to mesh.points (in the

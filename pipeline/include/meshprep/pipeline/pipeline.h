@@ -12,6 +12,7 @@
 /// (pipeline_outputs.h) turns the result into files.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/taken_back.h"
 #include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/quadratic.h"
@@ -43,6 +44,7 @@ struct StageRecord {
   double faces_min_angle_below_20 = 0;  ///< fraction
   std::size_t self_intersections = 0;
   nlohmann::ordered_json details = nlohmann::ordered_json::object();  ///< the stage's own figures
+  std::vector<TakenBack> taken_back;  ///< work the stage's guards took back (taken_back.h)
 };
 
 /// Whether the final tets are FEM-ready, and why not.

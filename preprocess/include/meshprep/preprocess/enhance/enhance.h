@@ -16,6 +16,7 @@
 /// the distribution stops improving; the best is kept.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/taken_back.h"
 #include "meshprep/preprocess/patches/patches.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -94,6 +95,9 @@ struct EnhanceResult {
   std::size_t faces_before = 0, faces_after = 0;
   QualityTail before, after;
   double seconds = 0;
+  /// The remeshing when it made the surface cross itself or reached its face limit, rounds' edits
+  /// that made it cross itself, vertex moves the guards put back, and every round when none gained.
+  std::vector<TakenBack> taken_back;
 };
 
 /// Enhance `mesh` in place. `reference` is the surface to stay on (the original mesh); nullptr
@@ -104,7 +108,8 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
 nlohmann::ordered_json to_json(const QualityTail& tail);
 
 /// The run as `meshprep enhance --json` writes it, in this order: rounds, kept_round, flips,
-/// cap_flips, removed_vertices, split_edges, line_vertices, fixed_vertices, undone_moves, parameters (the
+/// cap_flips, removed_vertices, split_edges, line_vertices, fixed_vertices, undone_moves,
+/// guards_taken_back (json_values.h), remesh, parameters (the
 /// bound used, whether it was automatic, and the settings of `params`), tail_before, tail_after,
 /// time_seconds. The pipeline's stage record picks from it.
 nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams& params);

@@ -7,6 +7,7 @@
 /// the triangles that would then touch the rest at a single vertex (the mesh stays manifold).
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/taken_back.h"
 #include "meshprep/preprocess/reconstruct/partition_of_unity.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -46,6 +47,7 @@ struct ReconstructResult {
   std::vector<double> patch_variation;   ///< sigma of each patch
   std::vector<double> vertex_variation;  ///< sigma at each mesh vertex (the patches' sigma, blended)
   double seconds = 0;                    ///< the whole call (the fit and the grid)
+  std::vector<TakenBack> taken_back;     ///< reconstruct_adaptive: what its simplification took back
 };
 
 /// \throws InvalidInput as PartitionOfUnity, if --vertices is given for points on a line, or if the grid has fewer than 2 x 2 vertices or more
@@ -65,7 +67,7 @@ ReconstructResult mesh_surface(const PartitionOfUnity& fit, const ReconstructPar
 /// The run as `meshprep reconstruct --json` writes it, in this order: vertices, faces, grid
 /// {columns, rows}, patches, leaf_size, neighbors, variation {rule, threshold, growth,
 /// grown_patches, patch_sigma, vertex_sigma}, max_gap, gap_faces_left_out, fill_holes,
-/// filled_faces, reference_normal, time_seconds.
+/// filled_faces, reference_normal, guards_taken_back (json_values.h), time_seconds.
 nlohmann::ordered_json to_json(const ReconstructResult& result, const ReconstructParams& params);
 
 }  // namespace meshprep

@@ -27,6 +27,7 @@
 /// 6 times, one more ring each time), so the target may then not be reached.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/taken_back.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -83,6 +84,7 @@ struct SimplifyResult {
   std::size_t reshapes = 0;  ///< relaxation sweeps between collapses (each time the face count halved)
   std::size_t stuck_restarts = 0;  ///< queue restarts after flips and relaxation freed collapses the shape guard refused
   bool banded_queue = false;  ///< the collapses ran in the banded order (banded_queue_from_edges)
+  std::vector<TakenBack> taken_back;  ///< decimations started again because the output crossed itself
 };
 
 /// Simplify `mesh` in place (garbage-collected on return).
@@ -99,8 +101,8 @@ bool reaches_target(std::size_t faces, std::size_t target);
 
 /// The result as `meshprep simplify --json` writes it, in this order: faces_before, faces_after,
 /// target_faces, reached_target, time_seconds, collapses, rejected {topology, shape, max_error},
-/// energy_evaluations, intersection_retries, reshapes, stuck_restarts, queue_order ("cost" or
-/// "cost_bands"), polish {flips, moves, fit_moves}. The pipeline's stage record picks from it.
+/// energy_evaluations, intersection_retries, guards_taken_back (json_values.h), reshapes,
+/// stuck_restarts, queue_order ("cost" or "cost_bands"), polish {flips, moves, fit_moves}. The pipeline's stage record picks from it.
 nlohmann::ordered_json to_json(const SimplifyResult& result);
 
 }  // namespace meshprep

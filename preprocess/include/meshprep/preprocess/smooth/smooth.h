@@ -36,6 +36,7 @@
 /// Laplace smoother) are in-tree baselines.
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/taken_back.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -81,6 +82,7 @@ struct SmoothResult {
   /// when a step left the surface crossing itself).
   std::optional<std::size_t> input_self_intersections;
   double seconds = 0;
+  std::vector<TakenBack> taken_back;  ///< moves put back because the surface crossed itself
 };
 
 /// Smooth `mesh` in place. \throws InvalidInput if params are out of range.
@@ -92,7 +94,7 @@ SmoothResult smooth(TriMesh& mesh, const SmoothParams& params = {});
 /// vertices_kept {corners, boundary, unfitted, undone_for_self_intersections, not_moved},
 /// feature_line_vertices); then
 /// preserve_volume, volume_before, volume_after, volume_change_relative (null on an open mesh),
-/// max_displacement, time_seconds. The pipeline's stage record picks from it.
+/// max_displacement, guards_taken_back (json_values.h), time_seconds. The pipeline's stage record picks from it.
 nlohmann::ordered_json to_json(const SmoothResult& result, const SmoothParams& params);
 
 }  // namespace meshprep
