@@ -5,6 +5,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/solver_targets.h"
+#include "meshprep/fem/tet_quality.h"
 #include "meshprep/quality/quality_parameters.h"
 
 #include <algorithm>
@@ -90,6 +91,11 @@ void check_output_files(const std::vector<std::string>& inputs, const std::vecto
                            "); give each output its own file");
   }
   for (const std::string& output : output_files) check_writable(output, folders);
+}
+
+void refuse_flat_tets(const TetMesh& tets, const std::string& input, const std::string& output) {
+  const std::string flat = describe_flat_tets(tets);
+  if (!flat.empty()) throw WorkFailed(input + ": " + flat + "; a solver cannot take such tets: " + output + " is not written");
 }
 
 void note_taken_back(const std::vector<TakenBack>& taken_back) {

@@ -56,6 +56,11 @@ void check_output_files(const std::vector<std::string>& inputs, const std::vecto
 void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
                               const std::string& what, const std::string& advice);
 
+/// \throws WorkFailed "IN: 2 tets are flat or inverted ...; a solver cannot take such tets: OUT is not
+/// written" when `tets` has a tet that is not certainly_positive (tet_quality.h): no command writes
+/// one. (The writers refuse them too; this names the run's input and the failed work, exit 1.)
+void refuse_flat_tets(const TetMesh& tets, const std::string& input, const std::string& output);
+
 /// One note on stderr per piece of work a guard took back ("meshprep: note: enhance: remeshing
 /// taken back (self-intersection): ..."); the --json record lists them under guards_taken_back.
 void note_taken_back(const std::vector<TakenBack>& taken_back);

@@ -72,6 +72,7 @@ int run_improve(const ImproveOptions& o) {
   json["tet_quality"] = to_json(after);
   json["fem_ready"] = verdict.ok();
   json["thresholds"] = to_json(verdict);
+  refuse_flat_tets(tets, o.input, o.output);
   TetExportReport written;
   write_tet_mesh(tets, o.output, options, &written);
   note_export_rounding(o.output, written);

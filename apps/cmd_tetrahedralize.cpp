@@ -155,6 +155,7 @@ int run_tetrahedralize(const TetOptions& o) {
   json["tet_quality"] = to_json(quality);
   json["fem_ready"] = verdict.ok();
   json["thresholds"] = to_json(verdict);
+  refuse_flat_tets(tets, o.input, o.output);
   TetExportReport written;
   write_tet_mesh(tets, o.output, options, &written);
   note_export_rounding(o.output, written);

@@ -30,6 +30,8 @@ std::string improvement_summary(const ImproveResult& r) {
                      format_number(r.min_dihedral_after_deg, 3) + " deg, largest " +
                      format_number(r.max_dihedral_before_deg, 4) + " -> " + format_number(r.max_dihedral_after_deg, 4) +
                      " deg (" + r.stopped_by + ", " + format_number(r.seconds, 3) + " s)";
+  if (r.flat_boundary_tets_removed > 0)
+    line += "; " + std::to_string(r.flat_boundary_tets_removed) + " flat tet(s) on the boundary removed (its triangles flipped in their plane)";
   const std::string limit = surface_limit_note(r, std::numeric_limits<double>::infinity());
   return limit.empty() ? line : line + "; " + limit;
 }

@@ -92,6 +92,21 @@ grep -q "tangled.msh: tet mesh: [0-9]* tets have negative volume among positive 
 else
   echo "skipped: the tangled mesh (no python3 with meshio and numpy)"
 fi
+# A flat tet on the boundary (issue 45, item 3): a pyramid whose planar base is triangulated on the
+# boundary by one diagonal and inside by the other, the flat tet of its four corners between them.
+# No command writes it; the improvement removes it (a flip of the base's two triangles).
+printf 'MeshVersionFormatted 2\nDimension 3\nVertices 5\n0 0 0 0\n1 0 0 0\n1.1 1 0 0\n0 1 0 0\n0.5 0.5 -0.8 0\n' > flat.mesh
+printf 'Tetrahedra 3\n1 2 3 4 1\n1 2 5 3 1\n1 3 5 4 1\nTriangles 6\n1 2 4 1\n2 3 4 1\n1 5 2 2\n2 5 3 2\n3 5 4 2\n4 5 1 2\nEnd\n' >> flat.mesh
+"$bin" convert flat.mesh -o flat.msh > /dev/null 2> err.txt; expect_exit "convert a flat tet" 2 $?
+one_line "convert a flat tet" "flat.msh: cannot export: 1 tet is flat or inverted (the volume is not positive beyond rounding); the first, tet 0, at (0.525, 0.5, 0)"
+[ ! -e flat.msh ] && ok || bad "convert a flat tet: a file written"
+"$bin" improve flat.mesh -o flat_improved.msh --json flat.json > stdout.txt 2> err.txt; expect_exit "improve a flat tet" 0 $?
+grep -q "1 flat tet(s) on the boundary removed" stdout.txt && ok || bad "improve a flat tet: the summary"
+python3 -c "
+import json; j = json.load(open('flat.json'))
+assert j['improvement']['flat_boundary_tets_removed'] == 1, j['improvement']
+q = j['tet_quality']; assert q['tetrahedra'] == 2 and q['inverted_tets'] == 0 and q['min_dihedral_deg']['min'] > 0.5, q
+assert abs(q['volume'] - 0.28) <= 1e-12, q['volume']" && ok || bad "improve a flat tet: removed, the volume kept"
 "$bin" improve missing.msh -o x.msh > /dev/null 2> err.txt; expect_exit "improve a missing file" 2 $?
 printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\n' > broken.msh
 "$bin" improve broken.msh -o x.msh > /dev/null 2> err.txt; expect_exit "improve a broken file" 2 $?

@@ -12,10 +12,12 @@
 #include "improve/vertex_smoothing.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/fem/export.h"
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/fem/tetrahedralize.h"
 
+#include "scratch_dir.h"
 #include "tet_test_meshes.h"
 #include "test_meshes.h"
 
@@ -400,6 +402,90 @@ TEST(ImproveTets, RemovesASliverBetweenFourSurfaceVertices) {
   EXPECT_GT(r.min_dihedral_after_deg, 15);
   EXPECT_EQ(r.stopped_by, "goal reached");
   EXPECT_EQ(analyze_tet_quality(m).min_dihedral_deg.min, r.min_dihedral_after_deg);
+}
+
+// A pyramid whose square base is triangulated on the boundary by one diagonal (b, d) and inside
+// by the other (a, c): between them a tet of the four base corners, flat when the base is planar
+// (what TetGen leaves where a CAD face is planar only to rounding). `rotation` and `scale` place the
+// part so that the base is planar only to rounding (a part rotated, in metres). Base faces are
+// tagged 1, the sides 2.
+TetMesh pyramid_with_flat_base_tet(const Eigen::Matrix3d& rotation, double scale) {
+  TetMesh m;
+  // a, b, c, d, the apex e below the base.
+  const std::vector<Vec3> at = {{0, 0, 0}, {1, 0, 0}, {1.1, 1, 0}, {0, 1, 0}, {0.5, 0.5, -0.8}};
+  // The orientations are those of the base with b and d raised (a ridge along the boundary's
+  // diagonal), whose limit the flat tet is.
+  std::vector<Vec3> ridge = at;
+  ridge[1].z() = ridge[3].z() = 0.01;
+  for (const Vec3& p : at) m.points.push_back(scale * (rotation * p));
+  m.tets = {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 2, 3, 4}};
+  m.tet_regions.assign(3, 1);
+  for (auto& t : m.tets) {
+    const double v = (ridge[t[1]] - ridge[t[0]]).dot((ridge[t[2]] - ridge[t[0]]).cross(ridge[t[3]] - ridge[t[0]]));
+    if (v < 0) std::swap(t[2], t[3]);
+  }
+  const auto outward = [&](std::array<std::uint32_t, 3> f) {  // away from the solid's inside
+    const Vec3 inside = (ridge[0] + ridge[2] + ridge[4]) / 3;
+    if ((ridge[f[1]] - ridge[f[0]]).cross(ridge[f[2]] - ridge[f[0]]).dot(ridge[f[0]] - inside) < 0) std::swap(f[1], f[2]);
+    return f;
+  };
+  m.boundary_faces = {outward({0, 1, 3}), outward({1, 2, 3}), outward({0, 1, 4}), outward({1, 2, 4}),
+                      outward({2, 3, 4}), outward({3, 0, 4})};
+  m.boundary_tags = {1, 1, 2, 2, 2, 2};
+  return m;
+}
+
+class FlatBoundaryTet : public test::ScratchDirTest {};
+
+TEST_F(FlatBoundaryTet, IsRemovedByFlippingTheBoundaryAndNeverWritten) {
+  const Eigen::Matrix3d turned = (Eigen::AngleAxisd(0.37, Vec3(0.3, 1, 0.2).normalized()) *
+                                  Eigen::AngleAxisd(0.61, Vec3::UnitX())).toRotationMatrix();
+  for (const auto& [rotation, scale] : {std::pair(Eigen::Matrix3d(Eigen::Matrix3d::Identity()), 1.0),
+                                        std::pair(turned, 1e-3), std::pair(turned, 1e3)}) {
+    TetMesh m = pyramid_with_flat_base_tet(rotation, scale);
+    ASSERT_EQ(flat_tets(m), std::vector<std::size_t>{0}) << scale;
+    // No writer takes it.
+    const std::string file = path("flat" + std::to_string(scale) + ".msh");
+    EXPECT_THROW(write_tet_mesh(m, file), InvalidInput);
+    EXPECT_FALSE(std::filesystem::exists(file));
+    const double volume = total_volume(m);
+    const ImproveResult r = improve_tets(m);
+    EXPECT_EQ(r.flat_boundary_tets_removed, 1u) << scale;
+    EXPECT_TRUE(flat_tets(m).empty()) << scale;
+    EXPECT_EQ(m.tets.size(), 2u);
+    // The flat tet's volume was zero to rounding: the solid's is the same to rounding.
+    EXPECT_NEAR(total_volume(m), volume, 1e-14 * std::pow(scale, 3)) << scale;
+    // The base is triangulated by the other diagonal (a, c) now, with its tag; the sides as they were.
+    std::map<std::array<std::uint32_t, 3>, int> tags;
+    for (std::size_t f = 0; f < m.boundary_faces.size(); ++f) {
+      auto key = m.boundary_faces[f];
+      std::sort(key.begin(), key.end());
+      tags[key] = m.boundary_tags[f];
+    }
+    EXPECT_EQ(tags, (std::map<std::array<std::uint32_t, 3>, int>{
+                        {{0, 1, 2}, 1}, {{0, 2, 3}, 1}, {{0, 1, 4}, 2}, {{1, 2, 4}, 2}, {{2, 3, 4}, 2}, {{0, 3, 4}, 2}}));
+    // Each listed face is outward: a face of one tet, oriented as that tet's outward face.
+    std::vector<std::array<std::uint32_t, 3>> outward;
+    for (const Tetrahedron& t : m.tets)
+      for (int c = 0; c < 4; ++c) outward.push_back(outward_face(t, c));
+    for (const auto& f : m.boundary_faces) {
+      const bool found = std::any_of(outward.begin(), outward.end(), [&](const std::array<std::uint32_t, 3>& g) {
+        for (int k = 0; k < 3; ++k)
+          if (g[k] == f[0] && g[(k + 1) % 3] == f[1] && g[(k + 2) % 3] == f[2]) return true;
+        return false;
+      });
+      EXPECT_TRUE(found) << f[0] << " " << f[1] << " " << f[2];
+    }
+    EXPECT_NO_THROW(write_tet_mesh(m, file));
+  }
+}
+
+TEST(ImproveTets, LeavesAnInvertedTetOnTheBoundaryToTheTangleCheck) {
+  // The same tet made clearly inverted (the base's far corner pushed through): a tangle, not a
+  // plane: the improvement refuses the mesh rather than remove it.
+  TetMesh m = pyramid_with_flat_base_tet(Eigen::Matrix3d::Identity(), 1);
+  m.points[2].z() = 0.3;
+  EXPECT_THROW(improve_tets(m), InvalidInput);
 }
 
 TEST(ImproveTets, TetGensTetsOfASphereReachTheGoalAtAnyScale) {

@@ -6,6 +6,7 @@
 #include "vtu_files.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/patch_names.h"
+#include "meshprep/fem/tet_quality.h"
 
 #include <algorithm>
 #include <array>
@@ -133,6 +134,8 @@ void validate(const TetMesh& mesh, const std::string& path) {
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) check_indices(path, "tet", t, mesh.tets[t], mesh.points.size());
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
     check_indices(path, "boundary face", f, mesh.boundary_faces[f], mesh.points.size());
+  if (const std::string flat = describe_flat_tets(mesh); !flat.empty())
+    throw InvalidInput(path + ": cannot export: " + flat + "; a solver cannot take such tets");
   if (mesh.quadratic()) validate_second_order(mesh, path);
   check_tags(path, "tet region", mesh.tet_regions);
   check_tags(path, "boundary tag", mesh.boundary_tags);

@@ -7,6 +7,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/quality/json_values.h"
+#include "meshprep/report/number_format.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -201,6 +202,41 @@ TetShape tet_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p
   s.scaled_jacobian = scaled_jacobian(lengths, jacobian);
   s.aspect_ratio = aspect_ratio(lengths, normals, s.volume);
   return s;
+}
+
+bool certainly_positive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  constexpr double eps = std::numeric_limits<double>::epsilon() / 2;  // 2^-53, Shewchuk's epsilon
+  constexpr double bound_a = (7.0 + 56.0 * eps) * eps;
+  const Vec3 u = b - a, v = c - a, w = d - a;
+  const double vy_wz = v.y() * w.z(), vz_wy = v.z() * w.y();
+  const double vz_wx = v.z() * w.x(), vx_wz = v.x() * w.z();
+  const double vx_wy = v.x() * w.y(), vy_wx = v.y() * w.x();
+  const double det = u.x() * (vy_wz - vz_wy) + u.y() * (vz_wx - vx_wz) + u.z() * (vx_wy - vy_wx);
+  const double permanent = std::abs(u.x()) * (std::abs(vy_wz) + std::abs(vz_wy)) +
+                           std::abs(u.y()) * (std::abs(vz_wx) + std::abs(vx_wz)) +
+                           std::abs(u.z()) * (std::abs(vx_wy) + std::abs(vy_wx));
+  return det > bound_a * permanent;
+}
+
+std::vector<std::size_t> flat_tets(const TetMesh& mesh) {
+  std::vector<std::size_t> flat;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    const auto& v = mesh.tets[t];
+    if (!certainly_positive(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]))
+      flat.push_back(t);
+  }
+  return flat;
+}
+
+std::string describe_flat_tets(const TetMesh& mesh) {
+  const std::vector<std::size_t> flat = flat_tets(mesh);
+  if (flat.empty()) return {};
+  Vec3 centre = Vec3::Zero();
+  for (const std::uint32_t v : mesh.tets[flat.front()]) centre += mesh.points[v] / 4;
+  const auto number = [](double x) { return format_number(x, 6); };
+  return std::to_string(flat.size()) + (flat.size() == 1 ? " tet is" : " tets are") +
+         " flat or inverted (the volume is not positive beyond rounding); the first, tet " + std::to_string(flat.front()) +
+         ", at (" + number(centre.x()) + ", " + number(centre.y()) + ", " + number(centre.z()) + ")";
 }
 
 std::vector<TetShape> tet_shapes(const TetMesh& mesh) {

@@ -8,6 +8,7 @@
 #include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/quadratic.h"
 #include "meshprep/fem/tet_boundary.h"
+#include "meshprep/fem/tet_quality.h"
 #include "meshprep/fem/tetrahedralize.h"
 #include "meshprep/preprocess/compose/adaptive_reconstruction.h"
 #include "meshprep/preprocess/enhance/enhance.h"
@@ -74,6 +75,7 @@ class Run {
       tetrahedralize_stage();
       improve_stage();
       second_order_stage();
+      refuse_flat_tets();
     } catch (const SolverError& e) {  // a stage could not do its work on this input: name the file
       throw PipelineFailed(result_.input + ": " + e.what());
     }
@@ -458,6 +460,17 @@ class Run {
     finish(std::move(record));
   }
 
+  // Tets flat to rounding that the improvement could not remove (or that it did not run to
+  // remove) cannot be written: no solver takes them (certainly_positive, tet_quality.h).
+  void refuse_flat_tets() const {
+    if (!result_.tets) return;
+    const std::string flat = describe_flat_tets(*result_.tets);
+    if (!flat.empty())
+      throw PipelineFailed(result_.input + ": " + flat + "; a solver cannot take such tets" +
+                           (config_.improve.enabled ? "" : " (the improvement, switched off, removes those on the boundary)") +
+                           "; nothing is written");
+  }
+
   // The verdict on the final tets (result_.tets, described by result_.tet_quality): FEM-ready when
   // they exist and meet every threshold of the configuration's verdict section.
   void improve_stage() {
@@ -479,6 +492,9 @@ class Run {
     record.note = "smallest dihedral " + figure(r.min_dihedral_before_deg) + " -> " + figure(r.min_dihedral_after_deg) +
                   " deg, largest " + figure(r.max_dihedral_before_deg) + " -> " + figure(r.max_dihedral_after_deg) +
                   " deg (" + r.stopped_by + ")";
+    if (r.flat_boundary_tets_removed > 0)
+      record.note += "; " + std::to_string(r.flat_boundary_tets_removed) +
+                     " flat tet(s) on the boundary removed (its triangles flipped in their plane)";
     const std::string limit = surface_limit_note(r, params.goal_min_dihedral_deg);
     if (!limit.empty()) record.note += "; " + limit;
     record.taken_back = r.taken_back;

@@ -41,6 +41,7 @@ nlohmann::ordered_json to_json(const ImproveResult& r) {
           {"compound_moves", r.compound_moves},
           {"contractions", r.contractions},
           {"inserted_vertices", r.inserted_vertices},
+          {"flat_boundary_tets_removed", r.flat_boundary_tets_removed},
           {"passes", r.passes},
           {"stopped_by", r.stopped_by},
           {"seconds", r.seconds},

@@ -5,6 +5,7 @@
 
 #include "compound_move.h"
 #include "edge_contraction.h"
+#include "flat_boundary_tets.h"
 #include "surface_limits.h"
 #include "tet_objective.h"
 #include "tet_complex.h"
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <queue>
 #include <unordered_map>
@@ -390,33 +392,43 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   const Clock::time_point start = Clock::now();
   ImproveResult result;
   analyze_tet_quality(mesh);  // checks indices and the region count (throws InvalidInput)
+  const DihedralRange before = dihedral_range(mesh);
+  result.min_dihedral_before_deg = before.min;
+  result.max_dihedral_before_deg = before.max;
+  result.tets_before = mesh.tets.size();
+  // Flat tets on the boundary, which no move below can touch, go first (flat_boundary_tets.h);
+  // their rounding may have given them a negative volume, which is no tangle. They go from a copy,
+  // the rest works on: a cancelled run leaves `mesh` as it was.
+  std::optional<TetMesh> unflattened;
+  if (!flat_tets(mesh).empty()) {
+    unflattened = mesh;
+    while (const std::size_t removed = remove_flat_boundary_tets(*unflattened))
+      result.flat_boundary_tets_removed += removed;
+  }
+  const TetMesh& input = unflattened ? *unflattened : mesh;
   // A tet of negative volume folds through its neighbours (the readers turn over mirrored regions
   // only): every move here keeps volumes positive, so none can mend it. Untangling is not offered.
   std::size_t negative = 0;
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) negative += tet_volume(mesh, t) < 0;
+  for (std::size_t t = 0; t < input.tets.size(); ++t) negative += tet_volume(input, t) < 0;
   if (negative > 0)
     throw InvalidInput("tet mesh: " + std::to_string(negative) +
                        " tets have negative volume among positive ones: the mesh is tangled (tets overlap), which "
                        "the improvement cannot mend");
-  result.tets_before = mesh.tets.size();
-  const DihedralRange before = dihedral_range(mesh);
-  result.min_dihedral_before_deg = before.min;
-  result.max_dihedral_before_deg = before.max;
   const double obtuse_weight = std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree) /
                                std::sin((180.0 - params.goal_max_dihedral_deg) * kRadiansPerDegree);
   // Far from the origin (a part placed at 1e9) the objective's products lose the shape's bits:
   // work next to it. The shift is exact both ways, so unmoved points come back bit for bit.
-  const Vec3 shift = origin_shift(mesh.points);
+  const Vec3 shift = origin_shift(input.points);
   TetMesh moved;
   if (!shift.isZero()) {
-    moved.points = mesh.points;
+    moved.points = input.points;
     for (Vec3& p : moved.points) p -= shift;
-    moved.tets = mesh.tets;
-    moved.tet_regions = mesh.tet_regions;
-    moved.boundary_faces = mesh.boundary_faces;
-    moved.boundary_tags = mesh.boundary_tags;
+    moved.tets = input.tets;
+    moved.tet_regions = input.tet_regions;
+    moved.boundary_faces = input.boundary_faces;
+    moved.boundary_tags = input.boundary_tags;
   }
-  TetComplex complex(shift.isZero() ? mesh : moved, obtuse_weight);
+  TetComplex complex(shift.isZero() ? input : moved, obtuse_weight);
   std::vector<LimitingBoundaryEdge> limiting = limiting_boundary_edges(complex, params.goal_min_dihedral_deg);
   for (LimitingBoundaryEdge& e : limiting) e.midpoint += shift;
   result.limiting_edge_count = limiting.size();
@@ -428,8 +440,10 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   schedule.run();
   result.below_goal_after = schedule.below_goal();
   if (result.passes > 0) {
-    mesh = complex.to_mesh(mesh);
+    mesh = complex.to_mesh(input);
     for (Vec3& p : mesh.points) p += shift;
+  } else if (unflattened) {
+    mesh = std::move(*unflattened);
   }
   result.tets_after = mesh.tets.size();
   const DihedralRange after = dihedral_range(mesh);

@@ -79,7 +79,8 @@ struct TetExportReport {
 /// \throws InvalidInput for an unknown extension (the message lists the supported ones), or a
 ///         malformed mesh (no tets, per-element arrays of the wrong size, an index out of range or
 ///         repeated within an element, a region or tag < 1, a name against patch_names.h's rule,
-///         a non-finite coordinate; for .inp also a boundary face that is not an outward face of
+///         a non-finite coordinate, a tet flat to rounding or inverted (certainly_positive,
+///         tet_quality.h: no solver can take it); for .inp also a boundary face that is not an outward face of
 ///         any tet, or one name, case aside, for two node sets or for two of the element sets and
 ///         surfaces); options the format cannot honour (check_tet_export_options);
 ///         IoError if a file cannot be written (nothing is left behind).

@@ -76,6 +76,9 @@ struct ImproveResult {
   std::size_t compound_moves = 0;       ///< removals kept only with the smoothing after them
   std::size_t contractions = 0;         ///< free vertices merged into a neighbour
   std::size_t inserted_vertices = 0;
+  /// Tets flat to rounding with two faces on the boundary, removed first (a 2-2 flip of the
+  /// boundary in its plane: fem/src/improve/flat_boundary_tets.h).
+  std::size_t flat_boundary_tets_removed = 0;
   std::size_t passes = 0;
   std::string stopped_by;  ///< "goal reached", "no gain", "pass limit", "time limit", "nothing to do"
   double seconds = 0;

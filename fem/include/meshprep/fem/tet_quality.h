@@ -14,6 +14,8 @@
 
 #include <map>
 #include <optional>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 namespace meshprep {
@@ -44,6 +46,22 @@ TetShape tet_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p
 /// The shape of every tet of `mesh`, in order (computed in parallel).
 /// \throws InvalidInput if a tet references a missing point.
 std::vector<TetShape> tet_shapes(const TetMesh& mesh);
+
+/// Whether the tet (a, b, c, d) has a positive volume beyond doubt: (b - a) . ((c - a) x (d - a))
+/// exceeds the bound on the rounding error of its own evaluation in doubles (Shewchuk 1997,
+/// "Adaptive precision floating-point arithmetic and fast robust geometric predicates": orient3d's
+/// error bound A, (7 + 56 eps) eps times the permanent of the differences). A tet that fails it is
+/// flat to rounding (its corners in one plane as far as doubles can tell, whatever its size or its
+/// place) or inverted: its stiffness matrix is singular, and no meshprep command writes it.
+bool certainly_positive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+/// The tets of `mesh` that are not certainly_positive, in order.
+/// \pre every tet references existing points.
+std::vector<std::size_t> flat_tets(const TetMesh& mesh);
+
+/// "2 tets are flat or inverted (their volume is not positive beyond rounding); the first, tet 17,
+/// at (x, y, z)", or empty when there are none.
+std::string describe_flat_tets(const TetMesh& mesh);
 
 /// One tet of a report's worst list.
 struct WorstTet {
