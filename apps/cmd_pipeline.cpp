@@ -234,8 +234,9 @@ Action add_pipeline_command(CLI::App& app) {
                   "Configuration file (JSON, keys in docs/pipeline.md; a pipeline.json replays its run)")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--repair", o->repair,
-                "Repair the input surface first (meshprep repair: weld split vertices, drop degenerate and duplicate "
-                "faces, orient); off by default");
+                "Repair the input surface first, as meshprep repair does (weld split vertices where edges are open, "
+                "drop degenerate and duplicate faces, split non-manifold edges and vertices, orient, fill holes, cut "
+                "self-intersections and keep the union); a valid closed input is left as it is; off by default");
   const ParameterInfo& keep_ratio = simplify_parameters().keep_ratio;
   auto* ratio =
       cmd->add_option(keep_ratio.flag, o->ratio, "Simplify: " + keep_ratio.help)->check(range_check(keep_ratio.range));

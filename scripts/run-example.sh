@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: installs what is missing, builds in Release, and runs
-# meshprep pipeline on
+# meshprep pipeline on the examples listed in examples/pipeline_examples.txt:
 #   - examples/data/jacksboro_10k.xyz: 10,000 scattered elevation points -> a terrain surface ->
 #     simplified -> enhanced -> closed into a block -> tets (out/terrain/);
 #   - examples/data/fandisk.off: a closed CAD part -> simplified to 30 % -> enhanced -> tets
@@ -20,7 +20,7 @@ example() {  # NAME INPUT [FLAGS...]: the pipeline into out/NAME, its verdict ap
   local name=$1 status=0
   shift
   rm -rf "out/$name"  # a failed run must not leave an earlier run's report to read
-  build/bin/meshprep pipeline "$@" -o "out/$name" || status=$?
+  build/bin/meshprep pipeline "$@" -o "out/$name" < /dev/null || status=$?
   case $status in
     0) verdicts+=("$name: FEM-ready") ;;
     1) [ -s "out/$name/tets.msh" ] || exit 1  # nothing to show: the failure is the message above
@@ -28,9 +28,9 @@ example() {  # NAME INPUT [FLAGS...]: the pipeline into out/NAME, its verdict ap
     *) exit "$status" ;;
   esac
 }
-example terrain examples/data/jacksboro_10k.xyz
-example fandisk examples/data/fandisk.off --ratio 0.3
-example femur examples/data/femur.off
+while read -r -a line; do  # the examples' list: NAME INPUT [FLAGS...]
+  [ ${#line[@]} -eq 0 ] || [[ ${line[0]} == \#* ]] || example "${line[@]}"
+done < examples/pipeline_examples.txt
 echo
 printf '%s\n' "${verdicts[@]}"
 echo "Open out/terrain/report.html, out/fandisk/report.html and out/femur/report.html in a browser;"

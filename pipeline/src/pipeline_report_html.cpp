@@ -26,6 +26,13 @@ std::string figure(double v) { return std::isfinite(v) ? format_number(v, 4) : "
 
 std::string degrees(double v) { return std::isfinite(v) ? format_number(v, 4) + "\u00b0" : "-"; }
 
+// A row of words: every cell aligned left.
+std::string text_row(const std::vector<std::string>& cells, const char* tag = "td") {
+  std::string out = "<tr>";
+  for (const std::string& cell : cells) out += std::string("<") + tag + ">" + escape(cell) + "</" + tag + ">";
+  return out + "</tr>\n";
+}
+
 std::string row(const std::vector<std::string>& cells, const char* tag = "td") {
   std::string out = "<tr>";
   for (std::size_t i = 0; i < cells.size(); ++i)
@@ -106,11 +113,11 @@ std::string taken_back_section(const PipelineResult& r) {
           if (after.name == before.name)
             figures += (figures.empty() ? "" : "; ") + before.name + " " + format_number(before.value, 4) + " \u2192 " +
                        format_number(after.value, 4);
-      rows += row({t.stage, std::to_string(t.count) + " " + t.work, t.guard, t.reason, figures});
+      rows += text_row({t.stage, std::to_string(t.count) + " " + t.work, t.guard, t.reason, figures});
     }
   if (rows.empty()) return "<p class=\"note\">No guard took any stage's work back.</p>\n";
   return "<h3>Work the guards took back</h3>\n<table>\n" +
-         row({"stage", "work", "guard", "why, and what was kept", "figures (as the work left them \u2192 as kept)"}, "th") +
+         text_row({"stage", "work", "guard", "why, and what was kept", "figures (as the work left them \u2192 as kept)"}, "th") +
          rows + "</table>\n";
 }
 
