@@ -144,6 +144,10 @@ int run_tetrahedralize(const TetOptions& o) {
       throw stopped();
     }
   }
+  // The improvement keeps the boundary: the change is TetGen's (tetrahedralize.h).
+  json["volume_change_relative"] = volume_change_relative(plc, tets);
+  if (const std::string note = volume_change_note(json["volume_change_relative"]); !note.empty())
+    std::cerr << "meshprep: note: " << o.input << ": " << note << '\n';
   if (o.fem_check) {  // on the linear tets: the check's solve is P1
     progress("FEM check: P1 Poisson solve on " + std::to_string(tets.tets.size()) + " tets ...");
     json["fem_check"] = to_json(run_fem_check(tets));

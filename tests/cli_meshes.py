@@ -15,6 +15,8 @@ Usage: cli_meshes.py NAME...   (NAME.off is written for each)
   plate      the cube scaled to 100 x 100 x 0.05 (a sheet part thinner than the weld distance)
   double_sided the cube with every face listed twice, once per orientation
   collapsed  50 faces whose three corners are one point each (zero area)
+  ridge      the cube with its top's diagonal (1,0,1)-(0,1,1) raised by 1e-4: its two top triangles
+             meet at 179.98 degrees, within TetGen's 0.1-degree facet tolerance
   wavy       two sheets z = 0.3 sin 3x cos 2y over [0, 3]^2, 0.002 apart, 16 x 16 squares each,
              closed by a rim (test_meshes.h: thin_wavy_plate): a remeshing pierces one sheet with the other
 """
@@ -73,6 +75,7 @@ def meshes():
         "collapsed": ([(float(k), 0.0, 0.0) for k in range(50) for _ in range(3)],
                       [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(50)]),
         "wavy": wavy_plate(16, 0.002),
+        "ridge": ([(x, y, z + (1e-4 if z == 1 and x + y == 1 else 0)) for (x, y, z) in P], T),
     }
 
 

@@ -263,6 +263,45 @@ SurfacePlc plc_from_surface(const TriangleSoup& surface, int tag) {
   return plc;
 }
 
+namespace {
+
+// The PLC's volume with every point moved by -shift.
+double shifted_volume(const SurfacePlc& plc, const Vec3& shift) {
+  double six_volume = 0;
+  for (const auto& facet : plc.facets) {
+    const Vec3 a = plc.points[facet[0]] - shift;
+    for (std::size_t k = 1; k + 1 < facet.size(); ++k)
+      six_volume += a.dot((plc.points[facet[k]] - shift).cross(plc.points[facet[k + 1]] - shift));
+  }
+  return six_volume / 6.0;
+}
+
+}  // namespace
+
+double plc_volume(const SurfacePlc& plc) { return shifted_volume(plc, Vec3::Zero()); }
+
+double volume_change_relative(const SurfacePlc& plc, const TetMesh& tets) {
+  // Both next to the origin, where the products keep the shape's bits (origin_shift.h).
+  const Vec3 shift = origin_shift(plc.points);
+  const double enclosed = shifted_volume(plc, shift);
+  double volume = 0;
+  for (const Tetrahedron& t : tets.tets) {
+    const Vec3 a = tets.points[t[0]] - shift;
+    volume += (tets.points[t[1]] - shift - a).dot((tets.points[t[2]] - shift - a).cross(tets.points[t[3]] - shift - a)) / 6.0;
+  }
+  return (volume - enclosed) / enclosed;
+}
+
+std::string volume_change_note(double change) {
+  if (!(std::abs(change) > kVolumeKeptRelative)) return {};
+  std::ostringstream note;
+  note.precision(3);
+  note << "the tets' volume differs from the surface's by " << change
+       << " of it: without keep-surface TetGen treats neighbouring facets within 0.1 deg of flat as one and may "
+          "retriangulate across their edge (--keep-surface keeps the surface exactly)";
+  return note.str();
+}
+
 TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
   // TetGen's Steiner points, tolerances and our enclosed volume (the cones below) are computed in
   // absolute coordinates: far from the origin TetGen gets the surface moved next to it.
@@ -274,11 +313,7 @@ TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
     for (Vec3& p : moved.holes) p -= shift;
   }
   const SurfacePlc& plc = shift.isZero() ? surface : moved;
-  double six_volume = 0;  // enclosed volume for a relative size bound (facets fanned from their first corner)
-  for (const auto& facet : plc.facets)
-    for (std::size_t k = 1; k + 1 < facet.size(); ++k)
-      six_volume += plc.points[facet[0]].dot(plc.points[facet[k]].cross(plc.points[facet[k + 1]]));
-  const std::string switches = tetgen_switches(params, std::abs(six_volume) / 6.0);
+  const std::string switches = tetgen_switches(params, std::abs(plc_volume(plc)));
   const detail::IsolatedResult run =
       detail::call_isolated([&] { return run_tetgen(plc, switches); }, params.cancelled);
   if (run.crashed || run.output.empty()) {

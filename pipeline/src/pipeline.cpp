@@ -433,11 +433,13 @@ class Run {
     fill_shape(record, result_.final_quality);
     const Clock::time_point start = Clock::now();
     TetParams params = config_.tetrahedralize.params;
+    double volume_change = 0;
     if (std::optional<SurfacePlc> plc = prepare_tet_input(record)) {
       params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
       params.cancelled = observer_.cancelled;
       try {
         result_.tets = tetrahedralize_plc(*plc, params);
+        volume_change = volume_change_relative(*plc, *result_.tets);
       } catch (const TetgenError& e) {
         result_.fem.problems.push_back(std::string("TetGen: ") + e.what());
       }
@@ -450,10 +452,12 @@ class Run {
       record.details = {{"tets", q.tetrahedra},
                         {"points", q.points},
                         {"volume", q.volume},
+                        {"volume_change_relative", volume_change},
                         {"min_dihedral_deg", q.min_dihedral_deg.min},
                         {"switches", result_.tetgen_switches}};
       record.note = std::to_string(q.tetrahedra) + " tets, smallest dihedral " +
                     figure(q.min_dihedral_deg.min) + " deg";
+      if (const std::string note = volume_change_note(volume_change); !note.empty()) record.note += "; " + note;
     } else {
       record.note = "not FEM-ready: " + result_.fem.problems.front();
     }

@@ -50,6 +50,25 @@ class TetgenError : public Error {
 /// ever, issue 30). \throws InvalidInput "tetrahedralize: <field> must be ..., not <value>".
 void check_tet_params(const TetParams& params);
 
+/// The volume the PLC encloses (each facet fanned from its first corner; a void's wall, facing
+/// into it, counts negative).
+double plc_volume(const SurfacePlc& plc);
+
+/// How far the tets' volume is from the PLC's, relative to it: (tets - plc) / plc. To rounding
+/// (1e-12) with TetParams::keep_surface; without it, TetGen treats neighbouring facets within 0.1
+/// degrees of flat as one facet (its -p tolerance, 179.9 degrees) and may retriangulate across
+/// their edge, which moves the boundary off a curved surface's nearly flat facets (1e-9 to 1e-6 of
+/// the volume on the shared CAD parts). Refusing it (TetGen's -p180) would keep every edge, at up
+/// to 2.6 times the tets (fandisk).
+double volume_change_relative(const SurfacePlc& plc, const TetMesh& tets);
+
+/// Above this |volume_change_relative| the boundary moved beyond the rounding of the two sums.
+inline constexpr double kVolumeKeptRelative = 1e-12;
+
+/// "the tets' volume differs from the surface's by 1.65e-06 of it: TetGen ... (--keep-surface keeps
+/// it)" when |change| > kVolumeKeptRelative; empty otherwise.
+std::string volume_change_note(double change);
+
 /// Tetrahedralise a PLC (no readiness check: the caller vouches for it).
 /// \throws TetgenError; InvalidInput for params out of range (check_tet_params); Cancelled when
 /// params.cancelled said so.
