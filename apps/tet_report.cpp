@@ -34,6 +34,7 @@ Json boundary_json(const TetMesh& mesh, const TetReadReport& read) {
   }
   return {{"faces", boundary.triangles.size()},
           {"interface_faces", read.interface_faces},
+          {"internal_faces", read.internal_faces},
           {"faces_per_tag", tags},
           {"faces_per_patch", patches},
           {"closed", topology.closed},
@@ -146,6 +147,9 @@ void note_read_changes(const TetReadReport& read) {
        "tets have negative volume among positive neighbours: left as they are, inverted (the mesh is tangled)");
   note(read.elements_ignored, "points, lines or other lower-dimensional elements were skipped");
   note(read.duplicate_triangles, "triangles listed twice were read once (with the first one's tag)");
+  note(read.internal_faces,
+       "triangles lie inside a region (each a face of two of its tets): kept with their tags as an internal surface, "
+       "and written as tagged triangles like the boundary");
 }
 
 void write_tet_summary(std::ostream& out, const Json& report) {

@@ -107,6 +107,14 @@ import json; j = json.load(open('flat.json'))
 assert j['improvement']['flat_boundary_tets_removed'] == 1, j['improvement']
 q = j['tet_quality']; assert q['tetrahedra'] == 2 and q['inverted_tets'] == 0 and q['min_dihedral_deg']['min'] > 0.5, q
 assert abs(q['volume'] - 0.28) <= 1e-12, q['volume']" && ok || bad "improve a flat tet: removed, the volume kept"
+# A triangle inside a region (issue 45, item 11): two tets of one region and their shared face
+# listed: kept as an internal surface with its tag, and said so.
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n$EndNodes\n' > internal.msh
+printf '$Elements\n3\n1 4 2 4 1 1 2 3 4\n2 4 2 4 1 2 3 4 5\n3 2 2 9 1 4 3 2\n$EndElements\n' >> internal.msh
+"$bin" convert internal.msh -o internal.mesh --json internal.json > /dev/null 2> err.txt; expect_exit "an internal triangle" 0 $?
+one_line "an internal triangle" "internal.msh: 1 triangles lie inside a region (each a face of two of its tets): kept with their tags"
+grep -A1 "^Triangles" internal.mesh | tail -1 | grep -qx 7 && ok || bad "an internal triangle: written with the six boundary faces"
+
 # Split mode and the volume (issue 45, item 4): TetGen merges the ridge's two top triangles (within
 # its 0.1-degree tolerance) and cuts the ridge tet away, d / 3 of the volume: reported with its
 # cause; --keep-surface keeps the surface and the volume to rounding.

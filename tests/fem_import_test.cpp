@@ -270,6 +270,7 @@ TEST_F(FemImportTest, InterfaceTrianglesAreKept) {
     const TetMesh read = read_tet_mesh(path(name), &report);
     expect_identical(mesh, read);
     EXPECT_EQ(report.interface_faces, 8u) << name;
+    EXPECT_EQ(report.internal_faces, 0u) << name;  // between the two regions
     EXPECT_EQ(std::count(read.boundary_tags.begin() + static_cast<std::ptrdiff_t>(outer), read.boundary_tags.end(), 7), 8)
         << name;
     expect_outward_boundary(read);
@@ -887,6 +888,7 @@ TEST_F(FemImportTest, HandWrittenMsh22WithAMirroredRegion) {
   EXPECT_EQ(report.tets_inverted, 0u);
   EXPECT_EQ(report.elements_ignored, 1u);
   EXPECT_EQ(report.interface_faces, 1u);
+  EXPECT_EQ(report.internal_faces, 1u);  // both tets in region 4
   EXPECT_EQ(mesh.tet_regions, (std::vector<int>{4, 4}));
   // The interface first (as listed), then the six faces of one tet each, tag 1.
   ASSERT_EQ(mesh.boundary_faces.size(), 7u);

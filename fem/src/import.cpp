@@ -237,6 +237,8 @@ void collect_boundary(TetMesh& mesh, const TetFileContent& content, const TetFac
         std::swap(triangle[1], triangle[2]);
     } else {
       ++report.interface_faces;
+      const std::uint32_t a = entries[first].tet_face / 4, b = entries[first + 1].tet_face / 4;
+      report.internal_faces += mesh.tet_regions[a] == mesh.tet_regions[b];
     }
     mesh.boundary_faces.push_back(triangle);
     mesh.boundary_tags.push_back(content.triangle_tags[f]);

@@ -65,6 +65,9 @@ struct TetReadReport {
   std::string format;                    ///< e.g. "msh 4.1 binary", "vtu appended raw zlib", "vtk 5.1 ascii"
   std::size_t triangles_in_file = 0;     ///< triangles the file lists (each but a duplicate is in boundary_faces)
   std::size_t interface_faces = 0;       ///< of those, faces of two tets (kept with their tags)
+  /// Of interface_faces, those inside one region (both tets in it): an internal surface, kept and
+  /// written with its tag like the boundary, which a solver may take for a boundary.
+  std::size_t internal_faces = 0;
   std::size_t duplicate_triangles = 0;   ///< triangles listed again (the first one's tag is kept)
   std::size_t untagged_boundary_faces = 0;  ///< boundary faces the file does not list (tag 1)
   /// Tets of negative volume in a region where all are (a mirrored region): corners 2 and 3 swapped.
