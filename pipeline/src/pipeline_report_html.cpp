@@ -261,9 +261,11 @@ std::string patch_section(const PipelineResult& r) {
                 faces != tet_faces.end() ? std::to_string(faces->second) : "-"});
   }
   if (r.tets)  // a block's sides and bottom
-    for (const auto& [tag, count] : tet_faces)
-      if (std::none_of(final_rows.begin(), final_rows.end(), [&](const PatchRow& patch) { return patch.tag == tag; }))
+    for (const auto& [tag, count] : tet_faces) {
+      const int block_tag = tag;  // (a lambda may not capture a structured binding in C++17)
+      if (std::none_of(final_rows.begin(), final_rows.end(), [&](const PatchRow& patch) { return patch.tag == block_tag; }))
         out += row({tag_name(r.tets->boundary_names, tag, "boundary"), "-", "-", "-", "-", std::to_string(count)});
+    }
   return out + "</table>\n</div>\n" + patch_picture_html(r.surface);
 }
 
