@@ -108,11 +108,9 @@ std::string taken_back_section(const PipelineResult& r) {
   for (const StageRecord& s : r.stages)
     for (const TakenBack& t : s.taken_back) {
       std::string figures;
-      for (const GuardFigure& before : t.before)
-        for (const GuardFigure& after : t.after)
-          if (after.name == before.name)
-            figures += (figures.empty() ? "" : "; ") + before.name + " " + format_number(before.value, 4) + " \u2192 " +
-                       format_number(after.value, 4);
+      for (const FigureChange& f : figure_changes(t))
+        figures += (figures.empty() ? "" : "; ") + f.name + " " + format_number(f.before, 4) + " \u2192 " +
+                   format_number(f.after, 4);
       rows += text_row({t.stage, std::to_string(t.count) + " " + t.work, t.guard, t.reason, figures});
     }
   if (rows.empty()) return "<p class=\"note\">No guard took any stage's work back.</p>\n";

@@ -27,6 +27,15 @@ struct TakenBack {
   std::vector<GuardFigure> before, after;
 };
 
+/// A figure present both before and after: "name before -> after" in the reports.
+struct FigureChange {
+  std::string name;
+  double before = 0, after = 0;
+};
+
+/// The figures of `taken` that are both in `before` and `after`, in `before`'s order.
+std::vector<FigureChange> figure_changes(const TakenBack& taken);
+
 /// One line for a terminal: "enhance: remeshing taken back (self-intersection): <reason>;
 /// faces 5210 -> 1280; ...", each figure as the work left it -> as it is kept.
 std::string describe(const TakenBack& taken);
