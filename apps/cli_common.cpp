@@ -1,5 +1,6 @@
 #include "cli_common.h"
 #include "cli_parameters.h"
+#include "interrupt.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
@@ -93,13 +94,22 @@ void check_output_files(const std::vector<std::string>& inputs, const std::vecto
   for (const std::string& output : output_files) check_writable(output, folders);
 }
 
-void refuse_flat_tets(const TetMesh& tets, const std::string& input, const std::string& output) {
-  const std::string flat = describe_flat_tets(tets);
-  if (!flat.empty()) throw WorkFailed(input + ": " + flat + "; a solver cannot take such tets: " + output + " is not written");
-}
-
 void note_taken_back(const std::vector<TakenBack>& taken_back) {
   for (const TakenBack& t : taken_back) std::cerr << "meshprep: note: " << describe(t) << '\n';
+}
+
+void print_messages(const CommandMessages& messages) {
+  for (const std::string& message : messages) std::cerr << "meshprep: " << message << '\n';
+}
+
+CommandHooks terminal_hooks(std::function<void(double)> draw) {
+  CommandHooks hooks;
+  hooks.progress = stoppable(draw ? std::move(draw) : [](double) {});
+  hooks.cancelled = stop_requested;
+  hooks.step = [](const std::string& what) {
+    if (::isatty(STDERR_FILENO)) std::cerr << "meshprep: " << what << '\n';
+  };
+  return hooks;
 }
 
 CLI::Validator positive() {
@@ -233,20 +243,5 @@ std::string failed_names(const TetVerdict& verdict) {
 ThreadLimit::ThreadLimit(std::size_t threads)
     : threads_(threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency())),
       control_(tbb::global_control::max_allowed_parallelism, threads_) {}
-
-void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
-                              const std::string& what, const std::string& advice) {
-  if (output.self_intersections > 0 && output.self_intersections <= input_intersections) {
-    std::cerr << "meshprep: warning: " << output.path << " still intersects itself at " << output.self_intersections
-              << " face pairs (the input at " << input_intersections << "): tets need a surface that does not\n";
-    return;
-  }
-  const std::size_t new_pairs = new_self_intersections(output, input_intersections);
-  if (new_pairs == 0) return;
-  throw WorkFailed(path + ": the " + what + " surface intersects itself at " + std::to_string(new_pairs) +
-                   " more face pairs than the input (first: faces " +
-                   std::to_string(output.self_intersecting_pairs.front().first) + " and " +
-                   std::to_string(output.self_intersecting_pairs.front().second) + "); nothing written. " + advice);
-}
 
 }  // namespace meshprep::cli

@@ -1,6 +1,7 @@
 #pragma once
 // Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
 
+#include "meshprep/commands/outcome.h"
 #include "meshprep/core/io.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/fem/export.h"
@@ -50,20 +51,16 @@ enum class MissingFolders { refused, made };
 void check_output_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
                         MissingFolders folders = MissingFolders::refused);
 
-/// \throws WorkFailed if `output` (a report against the input) has more self-intersecting face
-/// pairs than the input had, naming the first pair and what to try instead; when it has as many or
-/// fewer but some, says so on stderr (the output is still written: the input had them).
-void refuse_new_intersections(const QualityReport& output, std::size_t input_intersections, const std::string& path,
-                              const std::string& what, const std::string& advice);
-
-/// \throws WorkFailed "IN: 2 tets are flat or inverted ...; a solver cannot take such tets: OUT is not
-/// written" when `tets` has a tet that is not certainly_positive (tet_quality.h): no command writes
-/// one. (The writers refuse them too; this names the run's input and the failed work, exit 1.)
-void refuse_flat_tets(const TetMesh& tets, const std::string& input, const std::string& output);
-
 /// One note on stderr per piece of work a guard took back ("meshprep: note: enhance: remeshing
 /// taken back (self-intersection): ..."); the --json record lists them under guards_taken_back.
 void note_taken_back(const std::vector<TakenBack>& taken_back);
+
+/// A command's notes and warnings on stderr, each as "meshprep: <message>".
+void print_messages(const CommandMessages& messages);
+
+/// The hooks of a command run from the terminal: `draw` shows its progress (may be empty), Ctrl-C
+/// and the timeout stop it (interrupt.h), each long step is named on stderr when it is a terminal.
+CommandHooks terminal_hooks(std::function<void(double)> draw = {});
 
 /// A validator for a number that must be above 0: "must be positive, not 0" (CLI11's own
 /// PositiveNumber prints its range to DBL_MAX's 309 digits).

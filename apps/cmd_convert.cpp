@@ -9,6 +9,7 @@
 #include "tet_second_order.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/commands/tet_commands.h"
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_parameters.h"
@@ -61,7 +62,10 @@ std::optional<QuadraticResult> change_order(const ConvertOptions& o, TetMesh& me
     return std::nullopt;
   }
   const std::optional<TriangleSoup> reference = o.reference.empty() ? std::nullopt : std::optional(read_soup(o.reference));
-  return make_second_order(mesh, reference ? &*reference : nullptr, counts);
+  CommandMessages messages;
+  QuadraticResult result = make_second_order(mesh, reference ? &*reference : nullptr, counts, messages, terminal_hooks());
+  print_messages(messages);
+  return result;
 }
 
 // --binary for a surface format that is text only (OFF, OBJ), refused before any work; --ascii

@@ -7,9 +7,9 @@
 // improvement moves linear tets: --order 2 makes them second-order afterwards.
 #include "cli_common.h"
 #include "interrupt.h"
-#include "tet_improvement.h"
 #include "tet_second_order.h"
 
+#include "meshprep/commands/tet_commands.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/fem/export.h"
@@ -47,47 +47,40 @@ int run_improve(const ImproveOptions& o) {
                        "meshprep tetrahedralize");
   TetReadReport read;
   TetMesh tets = read_tet_mesh(o.input, &read);
+  const std::optional<TriangleSoup> reference =
+      o.element_order.order == 2 && !o.reference.empty() ? std::optional(read_soup(o.reference)) : std::nullopt;
+  TetFinishing finishing;
+  finishing.improve_params = o.improve.applied_to({});
+  finishing.element_order = o.element_order;
+  finishing.thresholds = o.thresholds.applied_to({});
+  TetOutcome outcome;
+  try {
+    outcome = improve_command(std::move(tets), reference ? &*reference : nullptr, finishing, {o.input, o.output},
+                              terminal_hooks());
+  } catch (const Cancelled&) {
+    throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
+  }
+  print_messages(outcome.messages);
+  TetExportReport written;
+  write_tet_mesh(outcome.tets, o.output, options, &written);
+  note_export_rounding(o.output, written);
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["format"] = read.format;
   json["output"] = o.output;
-  json["order"] = o.element_order.order;
-  const TetQualityReport before = analyze_tet_quality(tets);
-  json["tet_quality_before"] = to_json(before);
-  ImproveResult improvement;
-  try {
-    improvement = run_improvement(tets, o.improve.applied_to({}), json);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(o.input + ": " + e.what());  // tets that overlap, a face of three tets
-  } catch (const Cancelled&) {
-    throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
-  }
-  std::optional<QuadraticResult> second_order;
-  if (o.element_order.order == 2) {
-    const std::optional<TriangleSoup> reference = o.reference.empty() ? std::nullopt : std::optional(read_soup(o.reference));
-    second_order = make_second_order(tets, reference ? &*reference : nullptr, json);
-  }
-  const TetQualityReport after = analyze_tet_quality(tets);
-  const TetVerdict verdict = judge_tets(after, o.thresholds.applied_to({}));
-  json["tet_quality"] = to_json(after);
-  json["fem_ready"] = verdict.ok();
-  json["thresholds"] = to_json(verdict);
-  refuse_flat_tets(tets, o.input, o.output);
-  TetExportReport written;
-  write_tet_mesh(tets, o.output, options, &written);
-  note_export_rounding(o.output, written);
+  json.update(outcome.report);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
     std::cout << o.input << " (" << read.format << ") -> " << o.output << '\n';
-    print_quality("before", before);
-    print_quality("after ", after);
-    std::cout << "  improved: " << improvement_summary(improvement) << '\n';
-    if (second_order) std::cout << "  second order: " << second_order_summary(*second_order) << '\n';
-    if (verdict.ok()) std::cout << "  FEM-ready: every threshold holds\n";
+    print_quality("before", *outcome.quality_before);
+    print_quality("after ", outcome.quality);
+    std::cout << "  improved: " << improvement_summary(*outcome.improvement) << '\n';
+    if (outcome.second_order) std::cout << "  second order: " << second_order_summary(*outcome.second_order) << '\n';
+    if (outcome.fem_ready()) std::cout << "  FEM-ready: every threshold holds\n";
   }
-  if (verdict.ok()) return kSuccess;
-  print_failed_thresholds(o.input, verdict.checks, &improvement);
-  throw WorkFailed(o.input + ": not FEM-ready: the tets fail " + failed_names(verdict) + " (above); " + o.output +
+  if (outcome.fem_ready()) return kSuccess;
+  print_failed_thresholds(o.input, outcome.verdict.checks, &*outcome.improvement);
+  throw WorkFailed(o.input + ": not FEM-ready: the tets fail " + failed_names(outcome.verdict) + " (above); " + o.output +
                    " is written");
 }
 

@@ -6,6 +6,7 @@
 #include "tet_report.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/commands/tet_mesh_report.h"
 #include "meshprep/core/io.h"
 #include "meshprep/fem/import.h"
 #include "meshprep/quality/quality_gate.h"

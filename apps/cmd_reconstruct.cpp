@@ -5,11 +5,10 @@
 #include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
-#include "stage_failure.h"
 
+#include "meshprep/commands/surface_commands.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
-#include "meshprep/preprocess/compose/adaptive_reconstruction.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
 #include "meshprep/preprocess/reconstruct/reconstruct_parameters.h"
 #include "meshprep/preprocess/reconstruct/variation_rule.h"
@@ -38,40 +37,31 @@ int run_reconstruct(const ReconstructOptions& o) {
   const ThreadLimit parallelism(o.threads);
   check_output_files({o.input}, {o.output, o.json});
   const PointSet input = read_points(o.input);
-  ReconstructParams params = o.params;
-  params.columns = o.resolution[0];
-  params.rows = o.resolution[1];
+  ReconstructCommand command{o.params, o.adaptive};
+  command.params.columns = o.resolution[0];
+  command.params.rows = o.resolution[1];
   ProgressBar bar("reconstruct");
-  const AdaptiveReconstructParams adaptive{params, stoppable([&bar](double fraction) { bar.update(fraction); })};
-  const ReconstructResult result = run_stage_on(o.input, [&] {
-    return o.adaptive ? reconstruct_adaptive(input.points, adaptive) : reconstruct_surface(input.points, params);
-  });
+  const ReconstructOutcome outcome =
+      reconstruct_command(input.points, command, {o.input, o.output}, terminal_hooks([&bar](double f) { bar.update(f); }));
   bar.finish();
-  note_taken_back(result.taken_back);
-  if (result.mesh.triangles.empty())
-    throw WorkFailed(o.input + ": every triangle is farther than --max-gap " + std::to_string(result.max_gap) +
-                     " from the samples; nothing written");
+  const ReconstructResult& result = outcome.result;
   WriteOptions write;
   write.vertex_scalars.push_back({"surface_variation", result.vertex_variation});  // PLY only
-  write_soup(result.mesh, o.output, write);
+  write_soup(outcome.surface, o.output, write);
 
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
-  json["points"] = input.points.size();
-  const nlohmann::ordered_json record = to_json(result, params);
-  for (const auto& [key, value] : record.items()) {
-    json[key] = value;
-    if (key == "grid") json["adaptive"] = o.adaptive;  // which of the two functions ran
-  }
+  json.update(outcome.report);
   if (!o.json.empty()) emit_json(json, o.json);
   if (o.json != "-") {
     std::cout << o.input << " -> " << o.output << ": " << input.points.size() << " points, "
-              << result.mesh.points.size() << " vertices, " << result.mesh.triangles.size() << " faces ("
+              << outcome.surface.points.size() << " vertices, " << outcome.surface.triangles.size() << " faces ("
               << result.gap_triangles << " left out over gaps wider than " << result.max_gap;
-    if (params.fill_holes) std::cout << "; " << result.filled_triangles << " kept over holes in the data, flagged";
+    if (command.params.fill_holes) std::cout << "; " << result.filled_triangles << " kept over holes in the data, flagged";
     std::cout << ") in " << result.seconds << " s\n";
   }
+  print_messages(outcome.messages);
   return kSuccess;
 }
 

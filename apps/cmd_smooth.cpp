@@ -5,17 +5,12 @@
 #include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
-#include "stage_failure.h"
 
+#include "meshprep/commands/surface_commands.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/preprocess/smooth/smooth.h"
 #include "meshprep/preprocess/smooth/smooth_parameters.h"
-#include "meshprep/quality/json_values.h"
-#include "meshprep/quality/report.h"
-#include "meshprep/quality/self_intersections.h"
-#include "meshprep/quality/triangle_metrics.h"
-#include "meshprep/report/report_writers.h"
 
 #include <iostream>
 #include <memory>
@@ -25,54 +20,33 @@ namespace {
 
 struct SmoothOptions {
   std::string input, output, json;
-  SmoothParams params;
-  std::size_t samples = QualityParams().distance_samples;
+  SmoothCommand command;
   std::size_t threads = 0;
 };
 
-int run_smooth(SmoothOptions o) {
+int run_smooth(const SmoothOptions& o) {
   const ThreadLimit parallelism(o.threads);
   check_output_files({o.input}, {o.output, o.json});
-  LoadedMesh loaded = load_mesh(o.input);
-  require_all_faces(loaded, "smoothing");
   ProgressBar bar("smooth");
-  o.params.progress = stoppable([&bar](double fraction) { bar.update(fraction); });
-  const SmoothResult result = run_stage_on(o.input, [&] { return smooth(loaded.mesh, o.params); });
-  note_taken_back(result.taken_back);
+  const SmoothOutcome outcome =
+      smooth_command(load_mesh(o.input), o.command, {o.input, o.output}, terminal_hooks([&bar](double f) { bar.update(f); }));
   bar.finish();
-  const TriangleSoup output = soup_from_mesh(loaded.mesh);
-
-  QualityParams quality_params;
-  quality_params.distance_samples = o.samples;
-  QualityReport quality = analyze_quality(output, quality_params, &loaded.soup);
-  quality.path = o.output;
-  quality.reference->path = o.input;
-  const std::size_t input_intersections =
-      result.input_self_intersections ? *result.input_self_intersections : find_self_intersections(loaded.soup).count;
-  refuse_new_intersections(quality, input_intersections, o.input, "smoothed", "Use fewer --iterations");
-  write_soup(output, o.output);
-
-  std::vector<double> input_radius_ratio;
-  for (const TriangleShape& shape : triangle_shapes(loaded.soup))
-    if (!shape.degenerate) input_radius_ratio.push_back(shape.radius_ratio);
+  write_soup(outcome.surface, o.output);
   nlohmann::ordered_json json;
   json["input"] = o.input;
   json["output"] = o.output;
-  json.update(to_json(result, o.params));
-  json["input_radius_ratio"] = json_distribution(summarize(input_radius_ratio));
-  json["input_self_intersections"] = input_intersections;
-  json["quality"] = to_json(quality);
+  json.update(outcome.report);
   if (!o.json.empty()) emit_json(json, o.json);
+  const SmoothResult& result = outcome.result;
   if (o.json != "-") {
-    std::cout << o.input << " -> " << o.output << ": " << choice_name(smooth_methods(), o.params.method) << ", "
-              << result.iterations << " iteration(s) in "
-              << result.seconds << " s; moved at most " << result.max_displacement << ", Hausdorff to the input "
-              << quality.reference->hausdorff_relative << " of the diagonal";
+    std::cout << o.input << " -> " << o.output << ": " << choice_name(smooth_methods(), o.command.params.method) << ", "
+              << result.iterations << " iteration(s) in " << result.seconds << " s; moved at most "
+              << result.max_displacement << ", Hausdorff to the input " << outcome.quality.reference->hausdorff_relative
+              << " of the diagonal";
     if (result.volume_before) std::cout << ", volume change " << 100 * (*result.volume_after / *result.volume_before - 1) << " %";
     std::cout << '\n';
   }
-  if (o.params.preserve_volume && !result.volume_before)
-    std::cerr << "meshprep: warning: --preserve-volume ignored: the surface is not closed\n";
+  print_messages(outcome.messages);
   return kSuccess;
 }
 
@@ -84,15 +58,15 @@ Action add_smooth_command(CLI::App& app) {
   cmd->add_option("input", o->input, "Surface mesh (manifold; closed or with boundaries)")->required();
   cmd->add_option("-o,--output", o->output, "Smoothed surface (.off .obj .ply .stl)")->required();
   const SmoothParameters& p = smooth_parameters();
-  add_choice(*cmd, p.method, o->params.method, smooth_methods());
-  add_parameter(*cmd, p.iterations, o->params.iterations);
-  add_parameter(*cmd, p.neighbors, o->params.neighbors);
-  add_parameter(*cmd, p.smoothing, o->params.smoothing);
-  add_parameter(*cmd, p.relaxation, o->params.relaxation);
-  add_parameter(*cmd, p.feature_angle_deg, o->params.feature_angle_deg);
-  add_parameter(*cmd, p.adaptive, o->params.adaptive);
-  add_parameter(*cmd, p.preserve_volume, o->params.preserve_volume);
-  add_samples_option(*cmd, o->samples);
+  add_choice(*cmd, p.method, o->command.params.method, smooth_methods());
+  add_parameter(*cmd, p.iterations, o->command.params.iterations);
+  add_parameter(*cmd, p.neighbors, o->command.params.neighbors);
+  add_parameter(*cmd, p.smoothing, o->command.params.smoothing);
+  add_parameter(*cmd, p.relaxation, o->command.params.relaxation);
+  add_parameter(*cmd, p.feature_angle_deg, o->command.params.feature_angle_deg);
+  add_parameter(*cmd, p.adaptive, o->command.params.adaptive);
+  add_parameter(*cmd, p.preserve_volume, o->command.params.preserve_volume);
+  add_samples_option(*cmd, o->command.quality.distance_samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the input) as JSON");
   return [o] { return run_smooth(*o); };

@@ -12,11 +12,6 @@
 
 namespace meshprep::cli {
 
-/// {"file", "input": {format, counts of TetReadReport}, "tet_quality": to_json(analyze_tet_quality),
-///  "boundary": {faces, interface_faces, faces_per_tag, faces_per_patch (by name: the mesh's
-///  boundary_names, `boundary_<t>` for a tag without one, as the writers name it), closed, manifold, oriented, components, non_manifold_edges, non_manifold_vertices, genus}}.
-nlohmann::ordered_json tet_mesh_report(const TetMesh& mesh, const TetReadReport& read);
-
 /// Notes on stderr about what the reader changed or skipped (reoriented tets, skipped elements,
 /// duplicate triangles), so that nothing is lost quietly.
 void note_read_changes(const TetReadReport& read);

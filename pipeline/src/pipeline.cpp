@@ -53,10 +53,11 @@ std::string figure(double value, int digits = 3) {
 
 class Run {
  public:
-  Run(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer)
-      : config_(config), observer_(observer) {
+  Run(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer,
+      const PipelineInput* given = nullptr)
+      : config_(config), observer_(observer), given_(given) {
     result_.input = input;
-    result_.from_points = extension_of(input) == "xyz";
+    result_.from_points = given ? given->points.has_value() : extension_of(input) == "xyz";
     stage_params_ = config.quality.params;
     stage_params_.distance_samples = std::max<std::size_t>(1000, config.quality.params.distance_samples / 5);
   }
@@ -156,7 +157,7 @@ class Run {
 
   void reconstruct() {
     StageRecord record = started("reconstruct");
-    const PointSet points = read_points(result_.input);
+    const PointSet points = given_ ? PointSet{*given_->points, {}} : read_points(result_.input);
     result_.input_points = points.points.size();
     const ReconstructParams& params = config_.reconstruct.params;
     const Clock::time_point start = Clock::now();
@@ -230,7 +231,7 @@ class Run {
   LoadedMesh repaired_input(QualityReport& report) {
     StageRecord record = started("repair");
     LoadedMesh loaded;
-    loaded.soup = read_soup(result_.input, &loaded.read);
+    loaded.soup = given_ ? *given_->surface : read_soup(result_.input, &loaded.read);
     record.faces_before = loaded.soup.triangles.size();
     RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
     // A closed input stays a solid: the terrain rule (an open sheet extruded into a block) is for
@@ -260,13 +261,22 @@ class Run {
     return loaded;
   }
 
+  // The surface given in memory, as load_mesh would have read it from a file.
+  LoadedMesh given_surface() const {
+    LoadedMesh loaded;
+    loaded.soup = *given_->surface;
+    loaded.read.path = result_.input;
+    loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
+    return loaded;
+  }
+
   void check_input() {
     std::optional<LoadedMesh> repaired;
     QualityReport repaired_report;
     if (config_.repair.enabled) repaired = repaired_input(repaired_report);
     StageRecord record = started("check");
     const Clock::time_point start = Clock::now();
-    LoadedMesh loaded = repaired ? std::move(*repaired) : load_mesh(result_.input);
+    LoadedMesh loaded = repaired ? std::move(*repaired) : given_ ? given_surface() : load_mesh(result_.input);
     require_all_faces(loaded, "the pipeline");
     result_.input_surface = std::move(loaded.soup);
     mesh_ = std::move(loaded.mesh);
@@ -557,6 +567,7 @@ class Run {
   PipelineResult result_;
   TriMesh mesh_;
   std::size_t input_self_intersections_ = 0;
+  const PipelineInput* given_;  ///< the input in memory, or null: the file result_.input
 };
 
 }  // namespace
@@ -564,6 +575,13 @@ class Run {
 PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config, const PipelineObserver& observer) {
   check_config(config);  // before any work, whoever built the configuration
   return Run(input, config, observer).run();
+}
+
+PipelineResult run_pipeline(const PipelineInput& input, const PipelineConfig& config, const PipelineObserver& observer) {
+  if (input.surface.has_value() == input.points.has_value())
+    throw InvalidInput(input.name + ": give the pipeline a surface or points, not " + (input.surface ? "both" : "neither"));
+  check_config(config);
+  return Run(input.name, config, observer, &input).run();
 }
 
 }  // namespace meshprep

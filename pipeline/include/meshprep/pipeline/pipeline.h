@@ -110,6 +110,19 @@ struct PipelineObserver {
 PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config,
                             const PipelineObserver& observer = {});
 
+/// The pipeline's input in memory instead of a file: a surface (with its patches) or points. `name`
+/// stands for the file in the result and the messages ("input" of report.json).
+struct PipelineInput {
+  std::string name;
+  std::optional<TriangleSoup> surface;
+  std::optional<std::vector<Vec3>> points;
+};
+
+/// run_pipeline on an input in memory (exactly one of surface and points), with the same figures
+/// as on a file holding it. \throws as above; InvalidInput when neither or both are given.
+PipelineResult run_pipeline(const PipelineInput& input, const PipelineConfig& config,
+                            const PipelineObserver& observer = {});
+
 /// The pipeline could not do its work on a valid input; the message gives the reason.
 class PipelineFailed : public Error {
  public:
