@@ -12,6 +12,7 @@ packages=(
   libhdf5-dev  # the heavy data of .xdmf files (the serial build; CMake's FindHDF5 finds it)
   libgmp-dev  # the exact stage of quality/'s orientation predicates
   python3
+  python3-dev pybind11-dev  # the Python module (python/)
   ccache  # the builds of scripts/build.sh and run-tests.sh reuse what an earlier build compiled
   # third-party readers that the tests use to read back every tet-mesh format we write
   gmsh python3-meshio python3-numpy

@@ -1,0 +1,289 @@
+"""The Python module (issue 46): arrays in and out, the same figures as the command line, errors as
+exceptions, calls that release the GIL and stop on Ctrl-C or a CancelToken.
+
+Run by ctest (python_module) with PYTHONPATH=build/python and MESHPREP_BIN=build/bin/meshprep."""
+
+import json
+import os
+import signal
+import subprocess
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import meshprep
+
+HERE = Path(__file__).resolve().parent
+DATA = HERE.parent / "data"
+EXAMPLES = HERE.parent.parent / "examples" / "data"
+BIN = os.environ.get("MESHPREP_BIN", str(HERE.parent.parent / "build" / "bin" / "meshprep"))
+
+
+def cube_surface(scale=1.0):
+    points = scale * np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0],
+                               [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], dtype=np.float64)
+    faces = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+                      [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]], dtype=np.int64)
+    return points, faces
+
+
+def run_cli(*args):
+    return subprocess.run([BIN, *map(str, args)], capture_output=True, text=True)
+
+
+# Keys whose values are not figures of the mesh: times, paths, machine facts.
+NOT_FIGURES = {"time_seconds", "seconds", "tetgen_seconds", "path", "file", "input", "output", "reference"}
+
+
+def assert_same_figures(a, b, where="report"):
+    """Every figure of `a` equals `b`'s to 1e-12 relative (times and names aside)."""
+    if isinstance(a, dict):
+        assert isinstance(b, dict), where
+        for key in a.keys() & b.keys():
+            if key not in NOT_FIGURES and not key.endswith("_seconds"):
+                assert_same_figures(a[key], b[key], f"{where}.{key}")
+    elif isinstance(a, list):
+        assert isinstance(b, list) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            assert_same_figures(x, y, f"{where}[{i}]")
+    elif isinstance(a, float) or isinstance(b, float):
+        assert a == pytest.approx(b, rel=1e-12, abs=0), where
+    else:
+        assert a == b, where
+
+
+def test_surface_arrays_are_views_of_one_copy():
+    points, faces = cube_surface()
+    surface = meshprep.Surface(points, faces)
+    assert surface.points.dtype == np.float64 and surface.points.shape == (8, 3)
+    assert surface.faces.dtype == np.uint32 and surface.faces.shape == (12, 3)
+    np.testing.assert_array_equal(surface.points, points)
+    np.testing.assert_array_equal(surface.faces, faces)
+    assert not np.shares_memory(surface.points, points)  # the one copy in
+    assert np.shares_memory(surface.points, surface.points)  # no copy out: the same storage each time
+    assert surface.points.__array_interface__["data"][0] == surface.points.__array_interface__["data"][0]
+    with pytest.raises(ValueError):
+        surface.points[0, 0] = 5  # read-only: the mesh is only changed by meshprep's calls
+    view = surface.points
+    del surface
+    assert view[1, 0] == 1.0  # the view keeps the mesh alive
+
+
+BAD_SURFACES = [
+    ("float32 points", lambda p, f: (p.astype(np.float32), f), "float64"),
+    ("(n, 2) points", lambda p, f: (np.ascontiguousarray(p[:, :2]), f), "shape"),
+    ("negative index", lambda p, f: (p, np.where(f == 3, -1, f)), "outside"),
+    ("index past the end", lambda p, f: (p, np.where(f == 7, 8, f)), "outside"),
+    ("NaN point", lambda p, f: (np.where(p == 1, np.nan, p), f), "not finite"),
+    ("infinite point", lambda p, f: (np.where(p == 1, np.inf, p), f), "not finite"),
+    ("non-contiguous points", lambda p, f: (np.asfortranarray(p), f), "contiguous"),
+    ("non-contiguous faces", lambda p, f: (p, np.asfortranarray(f)), "contiguous"),
+    ("float faces", lambda p, f: (p, f.astype(np.float64)), "integer"),
+    ("no points", lambda p, f: (np.zeros((0, 3)), f), "empty"),
+    ("no faces", lambda p, f: (p, np.zeros((0, 3), dtype=np.int64)), "empty"),
+]
+
+
+@pytest.mark.parametrize("name,make,message", BAD_SURFACES, ids=[b[0] for b in BAD_SURFACES])
+def test_bad_arrays_raise_input_error(name, make, message):
+    points, faces = make(*cube_surface())
+    with pytest.raises(meshprep.InputError, match=message):
+        meshprep.Surface(points, faces)
+
+
+def test_random_arrays_never_crash():
+    rng = np.random.default_rng(46)
+    dtypes = [np.float64, np.float32, np.int64, np.int32, np.uint8, np.bool_]
+    for _ in range(1000):
+        shape_p = tuple(int(s) for s in rng.integers(0, 5, size=rng.integers(1, 4)))
+        shape_f = tuple(int(s) for s in rng.integers(0, 5, size=rng.integers(1, 4)))
+        with np.errstate(all="ignore"):  # float64 -> float32 overflows to inf: part of the test
+            points = (rng.normal(size=shape_p) * 10.0 ** float(rng.integers(-3, 300))).astype(rng.choice(dtypes))
+        faces = rng.integers(-2, 6, size=shape_f).astype(rng.choice(dtypes))
+        try:
+            surface = meshprep.Surface(points, faces)
+        except meshprep.InputError:
+            continue
+        meshprep.quality(surface, distance_samples=1000)  # what is accepted can be measured
+
+
+def test_unknown_and_out_of_range_keywords_raise_before_work():
+    surface = meshprep.Surface(*cube_surface())
+    with pytest.raises(meshprep.InputError, match="unknown keyword 'min_angle'.*min_angle_deg"):
+        meshprep.simplify(surface, ratio=0.5, min_angle=10)
+    with pytest.raises(meshprep.InputError, match=r"simplify.min_angle_deg.*\[0, 60\)"):
+        meshprep.simplify(surface, ratio=0.5, min_angle_deg=70)
+    with pytest.raises(meshprep.InputError, match="exactly one of ratio and target_faces"):
+        meshprep.simplify(surface)
+    with pytest.raises(meshprep.InputError, match="verdict.max_dihedral_deg"):
+        meshprep.tetrahedralize(surface, verdict={"max_dihedral_deg": 400})
+
+
+def test_exit_codes_are_the_command_lines():
+    assert meshprep.InputError.exit_code == 2
+    assert meshprep.NotReadyError.exit_code == 1
+    assert meshprep.WorkError.exit_code == 3
+    assert meshprep.TimeoutError.exit_code == 124
+    assert meshprep.Cancelled.exit_code == 130
+    assert issubclass(meshprep.InputError, meshprep.Error) and issubclass(meshprep.InputError, ValueError)
+
+
+def test_read_errors_name_the_file(tmp_path):
+    missing = tmp_path / "missing.off"
+    with pytest.raises(meshprep.InputError, match="missing.off"):
+        meshprep.read(missing)
+    broken = tmp_path / "broken.off"
+    broken.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n")
+    with pytest.raises(meshprep.InputError, match="broken.off"):
+        meshprep.read(broken)
+
+
+@pytest.mark.parametrize("scale", [1.0, 1000.0])
+def test_cube_to_tets_is_fem_ready(scale, tmp_path):
+    result = meshprep.tetrahedralize(meshprep.Surface(*cube_surface(scale)))
+    assert result.fem_ready
+    tets = result.tets
+    assert tets.tets.shape[1] == 4 and tets.tets.shape[0] >= 5
+    volume = result.report["tet_quality"]["volume"]
+    assert volume == pytest.approx(scale ** 3, rel=1e-12)
+    out = tmp_path / "cube.msh"
+    tets.write(out)
+    back = meshprep.read(out)
+    np.testing.assert_array_equal(back.tets, tets.tets)
+
+
+def test_not_ready_error_carries_the_result():
+    with pytest.raises(meshprep.NotReadyError) as caught:
+        meshprep.tetrahedralize(meshprep.Surface(*cube_surface()), verdict={"min_dihedral_deg": 80})
+    assert caught.value.result.tets is not None
+    assert caught.value.report["fem_ready"] is False
+
+
+def test_open_surface_is_refused_as_not_ready_work():
+    points, faces = cube_surface()
+    with pytest.raises(meshprep.WorkError, match="not FEM-ready"):
+        meshprep.tetrahedralize(meshprep.Surface(points, faces[:-1]))
+
+
+def test_simplify_gives_the_command_lines_figures_and_file(tmp_path):
+    source = DATA / "handle.off"
+    cli_out, cli_json = tmp_path / "cli.off", tmp_path / "cli.json"
+    run = run_cli("simplify", source, "-o", cli_out, "--ratio", "0.3", "--samples", "20000", "--json", cli_json)
+    assert run.returncode == 0, run.stderr
+    result = meshprep.simplify(meshprep.read(source), ratio=0.3, quality={"distance_samples": 20000})
+    assert_same_figures(result.report, json.loads(cli_json.read_text()))
+    py_out = tmp_path / "py.off"
+    result.surface.write(py_out)
+    assert py_out.read_bytes() == cli_out.read_bytes()
+
+
+def test_tetrahedralize_gives_the_command_lines_figures_and_file(tmp_path):
+    source = DATA / "example004.stl"
+    cli_out, cli_json = tmp_path / "cli.msh", tmp_path / "cli.json"
+    run = run_cli("tetrahedralize", source, "-o", cli_out, "--json", cli_json)
+    assert run.returncode in (0, 1), run.stderr
+    try:
+        result = meshprep.tetrahedralize(meshprep.read(source))
+    except meshprep.NotReadyError as e:
+        result = e.result
+    assert_same_figures(result.report, json.loads(cli_json.read_text()))
+    py_out = tmp_path / "py.msh"
+    result.tets.write(py_out)
+    assert py_out.read_bytes() == cli_out.read_bytes()
+
+
+def test_pipeline_gives_the_command_lines_summary(tmp_path):
+    source = DATA / "example004.stl"
+    run = run_cli("pipeline", source, "-o", tmp_path / "cli", "--quiet")
+    assert run.returncode in (0, 1), run.stderr
+    try:
+        result = meshprep.pipeline(source, tmp_path / "py")
+    except meshprep.NotReadyError as e:
+        result = e.result
+    cli_report = json.loads((tmp_path / "cli" / "report.json").read_text())
+    assert_same_figures(result.report, cli_report)
+    assert (tmp_path / "py" / "tets.msh").read_bytes() == (tmp_path / "cli" / "tets.msh").read_bytes()
+
+
+def test_pipeline_on_a_surface_in_memory_gives_the_files_figures():
+    source = DATA / "example004.stl"
+    outcomes = []
+    for given in (source, meshprep.read(source)):
+        try:
+            outcomes.append(meshprep.pipeline(given, improve=False))
+        except meshprep.NotReadyError as e:
+            outcomes.append(e.result)
+    assert outcomes[1].report["input"] == "<surface>"
+    assert_same_figures(outcomes[1].report, outcomes[0].report)
+    np.testing.assert_array_equal(outcomes[1].tets.tets, outcomes[0].tets.tets)
+
+
+def test_progress_reaches_the_callback_and_can_stop_the_work():
+    surface = meshprep.read(DATA / "handle.off")
+    seen = []
+    meshprep.simplify(surface, ratio=0.5, progress=lambda stage, f: seen.append((stage, f)))
+    assert seen and all(stage == "simplify" and 0 <= f <= 1 for stage, f in seen)
+
+    class Stop(Exception):
+        pass
+
+    def stop(stage, fraction):
+        raise Stop()
+
+    with pytest.raises(Stop):
+        meshprep.simplify(surface, ratio=0.5, progress=stop)
+
+
+def slow_tets():
+    """A cube filled with many small tets: improving them takes seconds."""
+    return meshprep.tetrahedralize(meshprep.Surface(*cube_surface()), max_volume_relative=1e-5, improve=False,
+                                   verdict={"min_dihedral_deg": 0, "max_dihedral_deg": 180}).tets
+
+
+def test_cancel_token_stops_improve_and_nothing_is_written(tmp_path):
+    tets = slow_tets()
+    token = meshprep.CancelToken()
+    threading.Timer(0.2, token.cancel).start()
+    with pytest.raises(meshprep.Cancelled):
+        meshprep.improve(tets, cancel=token, goal_min_dihedral_deg=59, max_passes=1000)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_ctrl_c_stops_improve_with_keyboard_interrupt():
+    tets = slow_tets()
+    threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+    with pytest.raises(KeyboardInterrupt):
+        meshprep.improve(tets, goal_min_dihedral_deg=59, max_passes=1000)
+
+
+def test_two_threads_simplify_at_once_and_get_the_serial_results():
+    surface = meshprep.read(DATA / "handle.off")
+    serial = [meshprep.simplify(surface, ratio=r, quality={"distance_samples": 20000}).surface for r in (0.3, 0.5)]
+    results = [None, None]
+
+    def work(i, ratio):
+        results[i] = meshprep.simplify(surface, ratio=ratio, quality={"distance_samples": 20000}).surface
+
+    threads = [threading.Thread(target=work, args=(i, r)) for i, r in enumerate((0.3, 0.5))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for a, b in zip(serial, results):
+        np.testing.assert_array_equal(a.points, b.points)
+        np.testing.assert_array_equal(a.faces, b.faces)
+
+
+def test_meshio_round_trip():
+    meshio = pytest.importorskip("meshio")
+    surface = meshprep.Surface(*cube_surface())
+    back = meshprep.Surface.from_meshio(surface.to_meshio())
+    np.testing.assert_array_equal(back.points, surface.points)
+    tets = meshprep.tetrahedralize(surface).tets
+    mesh = tets.to_meshio()
+    assert isinstance(mesh, meshio.Mesh)
+    again = meshprep.TetMesh.from_meshio(mesh)
+    np.testing.assert_array_equal(again.tets, tets.tets)
