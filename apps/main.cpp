@@ -1,10 +1,10 @@
 // meshprep: FEM-ready surface and tetrahedral meshes with a clear report, in one command.
 #include "cli_common.h"
-#include "heap_policy.h"
 #include "interrupt.h"
 #include "solver_logging.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/heap_policy.h"
 
 #include <algorithm>
 #include <iostream>
@@ -51,7 +51,7 @@ const CLI::App* find_command(const CLI::App& app, const std::string& name) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  cli::keep_freed_memory_for_reuse();
+  keep_freed_memory_for_reuse();
   cli::quiet_solver_logging(argv[0]);
   CLI::App app{"meshprep " MESHPREP_VERSION
                " - turn raw geometry into meshes a finite-element solver can trust.\n"

@@ -115,7 +115,7 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
   if (hooks.cancelled && hooks.cancelled()) throw Cancelled("cancelled");  // TetGen had just finished
   json["tetgen_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (command.finishing.improve) {
-    outcome.quality_before = analyze_tet_quality(outcome.tets);
+    outcome.quality_before = analyze_tet_quality(outcome.tets, kDefaultWorstTets, hooks.cancelled);
     json["tetgen_quality"] = to_json(*outcome.quality_before);
   }
   finish_tets(outcome, &soup, command.finishing, command.finishing.improve, hooks, [&] {
@@ -141,7 +141,7 @@ TetOutcome improve_command(TetMesh tets, const TriangleSoup* reference, const Te
   outcome.tets = std::move(tets);
   nlohmann::ordered_json& json = outcome.report;
   json["order"] = finishing.element_order.order;
-  outcome.quality_before = analyze_tet_quality(outcome.tets);
+  outcome.quality_before = analyze_tet_quality(outcome.tets, kDefaultWorstTets, hooks.cancelled);
   json["tet_quality_before"] = to_json(*outcome.quality_before);
   try {
     finish_tets(outcome, reference, finishing, /*improve=*/true, hooks);

@@ -239,10 +239,11 @@ std::string describe_flat_tets(const TetMesh& mesh) {
          ", at (" + number(centre.x()) + ", " + number(centre.y()) + ", " + number(centre.z()) + ")";
 }
 
-std::vector<TetShape> tet_shapes(const TetMesh& mesh) {
+std::vector<TetShape> tet_shapes(const TetMesh& mesh, const std::function<bool()>& cancelled) {
   check_point_indices(mesh);
   std::vector<TetShape> shapes(mesh.tets.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, shapes.size(), 4096), [&](const auto& range) {
+    if (cancelled && cancelled()) throw Cancelled("tet quality stopped");
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
       const auto& v = mesh.tets[t];
       shapes[t] = tet_shape(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
@@ -251,11 +252,17 @@ std::vector<TetShape> tet_shapes(const TetMesh& mesh) {
   return shapes;
 }
 
-TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tet_count) {
+void check_tet_mesh_structure(const TetMesh& mesh) {
   if (mesh.tet_regions.size() != mesh.tets.size())
     throw InvalidInput("tet mesh: " + std::to_string(mesh.tet_regions.size()) + " region tags for " +
                        std::to_string(mesh.tets.size()) + " tets");
-  const std::vector<TetShape> shapes = tet_shapes(mesh);
+  check_point_indices(mesh);
+}
+
+TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tet_count,
+                                     const std::function<bool()>& cancelled) {
+  check_tet_mesh_structure(mesh);
+  const std::vector<TetShape> shapes = tet_shapes(mesh, cancelled);
   TetQualityReport r;
   r.points = mesh.points.size();
   r.tetrahedra = mesh.tets.size();

@@ -64,7 +64,8 @@ void register_exceptions(py::module_& module) {
   });
 }
 
-CallControl::CallControl(py::object progress, CancelToken* cancel) : progress_(std::move(progress)), cancel_(cancel) {}
+CallControl::CallControl(py::object progress, CancelToken* cancel, std::size_t threads)
+    : progress_(std::move(progress)), cancel_(cancel), threads_(threads) {}
 
 CallControl::~CallControl() = default;
 

@@ -8,6 +8,7 @@
 #include "meshprep/commands/outcome.h"
 
 #include <pybind11/pybind11.h>
+#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
@@ -38,8 +39,9 @@ void register_exceptions(py::module_& module);
 /// One call's link to Python: its hooks poll Ctrl-C and the callback on the caller's thread.
 class CallControl {
  public:
-  /// With the GIL held. `progress` may be None, `cancel` null.
-  CallControl(py::object progress, CancelToken* cancel);
+  /// With the GIL held. `progress` may be None, `cancel` null; `threads` > 0 bounds the threads
+  /// of this call's parallel parts (a TBB arena of its own, so concurrent calls keep their own bounds).
+  CallControl(py::object progress, CancelToken* cancel, std::size_t threads);
   ~CallControl();
 
   /// Hooks for the command, usable without the GIL; `stage` names the work to the callback.
@@ -56,7 +58,12 @@ class CallControl {
     {
       py::gil_scoped_release release;
       try {
-        result.emplace(work());
+        if (threads_ > 0) {
+          tbb::task_arena arena(static_cast<int>(threads_));
+          arena.execute([&] { result.emplace(work()); });
+        } else {
+          result.emplace(work());
+        }
       } catch (...) {
         failure = std::current_exception();
       }
@@ -75,6 +82,7 @@ class CallControl {
 
   py::object progress_;
   CancelToken* cancel_;
+  std::size_t threads_;
   std::thread::id caller_ = std::this_thread::get_id();
   std::atomic<bool> stop_{false};
   std::mutex mutex_;  // guards stage_ and pending_

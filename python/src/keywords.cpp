@@ -73,6 +73,7 @@ void apply_keywords(const Keywords& spec, const py::dict& kwargs, PipelineConfig
       for (const std::string& k : own_keys)
         if (!contains(spec.refused, k)) valid.push_back(k);
       for (const std::string& s : spec.sections) valid.push_back(s + "={...}");
+      valid.push_back("threads");  // the call's own (stages.cpp), as every command's --threads
       throw InvalidInput(origin + ": unknown keyword '" + name + "'; it takes " + joined(valid));
     }
   }

@@ -120,6 +120,9 @@ def test_unknown_and_out_of_range_keywords_raise_before_work():
         meshprep.simplify(surface)
     with pytest.raises(meshprep.InputError, match="verdict.max_dihedral_deg"):
         meshprep.tetrahedralize(surface, verdict={"max_dihedral_deg": 400})
+    with pytest.raises(meshprep.InputError, match="threads: expected an integer >= 0"):
+        meshprep.quality(surface, threads=-1)
+    assert "min_angle_deg (number in [0, 60), default 20.0)" in meshprep.simplify.__doc__
 
 
 def test_exit_codes_are_the_command_lines():
@@ -264,8 +267,8 @@ def test_two_threads_simplify_at_once_and_get_the_serial_results():
     serial = [meshprep.simplify(surface, ratio=r, quality={"distance_samples": 20000}).surface for r in (0.3, 0.5)]
     results = [None, None]
 
-    def work(i, ratio):
-        results[i] = meshprep.simplify(surface, ratio=ratio, quality={"distance_samples": 20000}).surface
+    def work(i, ratio):  # each on one thread of its own (threads=1): the same surface as on all cores
+        results[i] = meshprep.simplify(surface, ratio=ratio, quality={"distance_samples": 20000}, threads=1).surface
 
     threads = [threading.Thread(target=work, args=(i, r)) for i, r in enumerate((0.3, 0.5))]
     for t in threads:

@@ -67,10 +67,11 @@ struct DihedralRange {
   double min = 180, max = 0;
 };
 
-DihedralRange dihedral_range(const TetMesh& mesh) {
+DihedralRange dihedral_range(const TetMesh& mesh, const std::function<bool()>& cancelled) {
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, mesh.tets.size(), 4096), DihedralRange{},
       [&](const auto& range, DihedralRange r) {
+        if (cancelled && cancelled()) throw Cancelled("tet improvement stopped");
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
           const auto& v = mesh.tets[t];
           const TetShape s = tet_shape(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
@@ -391,8 +392,13 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
                        "improve the linear mesh, then make it second-order (--order 2)");
   const Clock::time_point start = Clock::now();
   ImproveResult result;
-  analyze_tet_quality(mesh);  // checks indices and the region count (throws InvalidInput)
-  const DihedralRange before = dihedral_range(mesh);
+  check_tet_mesh_structure(mesh);
+  // The setup below visits every tet several times (seconds on millions of tets): it asks the
+  // cancellation callback per block of tets, and between its steps.
+  const auto poll = [&params] {
+    if (params.cancelled && params.cancelled()) throw Cancelled("tet improvement stopped");
+  };
+  const DihedralRange before = dihedral_range(mesh, params.cancelled);
   result.min_dihedral_before_deg = before.min;
   result.max_dihedral_before_deg = before.max;
   result.tets_before = mesh.tets.size();
@@ -406,6 +412,7 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
       result.flat_boundary_tets_removed += removed;
   }
   const TetMesh& input = unflattened ? *unflattened : mesh;
+  poll();
   // A tet of negative volume folds through its neighbours (the readers turn over mirrored regions
   // only): every move here keeps volumes positive, so none can mend it. Untangling is not offered.
   std::size_t negative = 0;
@@ -428,8 +435,11 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
     moved.boundary_faces = input.boundary_faces;
     moved.boundary_tags = input.boundary_tags;
   }
-  TetComplex complex(shift.isZero() ? input : moved, obtuse_weight);
+  poll();
+  TetComplex complex(shift.isZero() ? input : moved, obtuse_weight, params.cancelled);
+  poll();
   std::vector<LimitingBoundaryEdge> limiting = limiting_boundary_edges(complex, params.goal_min_dihedral_deg);
+  poll();
   for (LimitingBoundaryEdge& e : limiting) e.midpoint += shift;
   result.limiting_edge_count = limiting.size();
   result.surface_bound_deg = limiting.empty() ? params.goal_min_dihedral_deg : limiting.front().bound_deg;
@@ -446,7 +456,7 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
     mesh = std::move(*unflattened);
   }
   result.tets_after = mesh.tets.size();
-  const DihedralRange after = dihedral_range(mesh);
+  const DihedralRange after = dihedral_range(mesh, {});
   result.min_dihedral_after_deg = after.min;
   result.max_dihedral_after_deg = after.max;
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();

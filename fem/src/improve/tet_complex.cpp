@@ -80,7 +80,7 @@ std::array<VertexId, 3> outward_face(const Tetrahedron& t, int c) {
   }
 }
 
-TetComplex::TetComplex(const TetMesh& mesh, double obtuse_weight)
+TetComplex::TetComplex(const TetMesh& mesh, double obtuse_weight, const std::function<bool()>& cancelled)
     : points_(mesh.points),
       free_(mesh.points.size(), 1),
       removed_(mesh.points.size(), 0),
@@ -110,6 +110,7 @@ TetComplex::TetComplex(const TetMesh& mesh, double obtuse_weight)
   std::atomic<std::size_t> bad_face{~std::size_t(0)};
   std::atomic<bool> overlapping{false};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_tets, 2048), [&](const auto& range) {
+    if (cancelled && cancelled()) throw Cancelled("tet improvement stopped");
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
       for (int c = 0; c < 4; ++c) {
         const Face f = outward_face(tets_[t], c);

@@ -17,10 +17,11 @@ constexpr TetId kNoTet = ~TetId(0);
 
 class TetComplex {
  public:
-  /// \pre every tet of `mesh` references existing points (analyze_tet_quality checks it).
+  /// \pre every tet of `mesh` references existing points (check_tet_mesh_structure).
   /// \throws InvalidInput if a face is shared by more than two tets, or two tets sharing a face
-  ///         are oriented inconsistently (they overlap).
-  TetComplex(const TetMesh& mesh, double obtuse_weight);
+  ///         are oriented inconsistently (they overlap); Cancelled when `cancelled` (asked once per
+  ///         block of tets, from any thread) says so.
+  TetComplex(const TetMesh& mesh, double obtuse_weight, const std::function<bool()>& cancelled = {});
 
   std::size_t tet_slots() const { return tets_.size(); }
   std::size_t live_tets() const { return tets_.size() - free_slots_.size(); }

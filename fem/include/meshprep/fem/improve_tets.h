@@ -54,7 +54,9 @@ struct ImproveParams {
   std::size_t max_passes = 10;    ///< >= 1
   double time_limit_seconds = 0;  ///< 0: none; the run stops after the move under way
   std::function<void(double fraction)> progress;  ///< optional, the share of the goal reached
-  std::function<bool()> cancelled;  ///< optional, asked every few hundred moves; true: throw Cancelled
+  /// Optional, asked every few hundred moves, and per block of tets while the run sets up (from
+  /// any of the threads doing it: it must be thread-safe); true: throw Cancelled.
+  std::function<bool()> cancelled;
 };
 
 /// A boundary edge where the surface caps the smallest dihedral angle below the goal.

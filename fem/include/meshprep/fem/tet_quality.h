@@ -12,6 +12,7 @@
 #include "meshprep/fem/tet_mesh.h"
 #include "meshprep/quality/statistics.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -43,9 +44,9 @@ struct TetShape {
 /// angles of 0 and/or 180 degrees.
 TetShape tet_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);
 
-/// The shape of every tet of `mesh`, in order (computed in parallel).
+/// The shape of every tet of `mesh`, in order (computed in parallel; `cancelled` as analyze_tet_quality's).
 /// \throws InvalidInput if a tet references a missing point.
-std::vector<TetShape> tet_shapes(const TetMesh& mesh);
+std::vector<TetShape> tet_shapes(const TetMesh& mesh, const std::function<bool()>& cancelled = {});
 
 /// Whether the tet (a, b, c, d) has a positive volume beyond doubt: (b - a) . ((c - a) x (d - a))
 /// exceeds the bound on the rounding error of its own evaluation in doubles (Shewchuk 1997,
@@ -109,11 +110,17 @@ struct TetQualityReport {
   std::optional<QuadraticTetQuality> quadratic;
 };
 
+/// \throws InvalidInput if tet_regions' (or a second-order mesh's tet_edge_nodes') size differs
+///         from tets' or a tet references a missing point: what every measure of the tets needs.
+void check_tet_mesh_structure(const TetMesh& mesh);
+
 /// Distributions ignore non-finite values (the radius-edge and aspect ratios of flat tets).
 /// \param worst_tets how many of the worst tets to list (all when the mesh has fewer).
-/// \throws InvalidInput if tet_regions' (or a second-order mesh's tet_edge_nodes') size differs
-///         from tets' or a tet references a missing point.
-TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tets = kDefaultWorstTets);
+/// \param cancelled asked once per block of a few thousand tets, from any of the threads measuring
+///        them (so it must be thread-safe); true: throws Cancelled.
+/// \throws InvalidInput as check_tet_mesh_structure.
+TetQualityReport analyze_tet_quality(const TetMesh& mesh, std::size_t worst_tets = kDefaultWorstTets,
+                                     const std::function<bool()>& cancelled = {});
 
 /// JSON keys: points, tetrahedra, volume, inverted_tets, min_dihedral_deg {min,mean,p5,p50,p95,max},
 /// max_dihedral_deg {...}, radius_edge_ratio {...}, tets_min_dihedral_below_10, tets_per_region {"1": n},

@@ -1,10 +1,10 @@
-#include "heap_policy.h"
+#include "meshprep/core/heap_policy.h"
 
 #if __has_include(<malloc.h>)
 #include <malloc.h>
 #endif
 
-namespace meshprep::cli {
+namespace meshprep {
 
 void keep_freed_memory_for_reuse() {
 #if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)  // glibc's mallopt
@@ -15,4 +15,4 @@ void keep_freed_memory_for_reuse() {
 #endif
 }
 
-}  // namespace meshprep::cli
+}  // namespace meshprep
