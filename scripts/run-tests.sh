@@ -27,17 +27,16 @@ launcher=()  # as in scripts/build.sh
 export CCACHE_BASEDIR=$PWD
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DMESHPREP_BUILD_FUZZERS=ON "${launcher[@]}" \
   -DMESHPREP_WERROR=ON -DMESHPREP_BUILD_BENCH=OFF -DMESHPREP_BUILD_EXAMPLES=OFF -DMESHPREP_INSTALL=OFF \
-  -DMESHPREP_BUILD_PYTHON=OFF -DMESHPREP_SHARED_DATA_DIR= >/dev/null
-# (The Python module is not built here yet: an instrumented extension needs the sanitizer runtime
-# preloaded into python3; its C++ underneath, commands/ and the stages, is tested here.)
+  -DMESHPREP_SHARED_DATA_DIR= >/dev/null
 cmake --build build-sanitize -j "$jobs"
 # Every test binary (the GoogleTest suites of every module); the scripts that drive the binary
-# (cli_*, the report in Chromium, the docs, the README's figures, the solvers' and readers' checks)
+# (cli_*, the report in Chromium, the docs, the README's figures, the solvers' and readers' checks, the
+# Python module's comparisons with the command line)
 # stay Release-only: under the sanitizers each call of the binary is 5-20 times slower, and the
 # scripts would take CI past its time (cli_contract alone ran over 8 minutes).
 # So do the suites' large-input cases (each over 50 s there: whole pipelines on the bundled
 # examples, figures compared across scales), whose code the small cases run too.
-SANITIZE_SKIPPED="^(cli_.*|report_renders_in_chromium|docs_in_sync|readme_figures|solver_examples|cad_formats|xdmf_dolfinx"
+SANITIZE_SKIPPED="^(cli_.*|report_renders_in_chromium|docs_in_sync|readme_figures|solver_examples|cad_formats|xdmf_dolfinx|python_equivalence|python_examples"
 SANITIZE_SKIPPED+="|Pipeline\.(EachPatchKeepsItsAreaToTheTets|TetGenSplitsABlocksTrianglesUnlessToldToKeepThem"
 SANITIZE_SKIPPED+="|TheOutputFolderHoldsOneRunsFilesAndReplays|AClosedSurfaceBecomesTetsThatFillItsVolume"
 SANITIZE_SKIPPED+="|PointsBecomeATerrainClosedIntoABlock)|PipelineSecondOrder\..*|Enhance\.TheSameFiguresInMillimetresAsInMetres"

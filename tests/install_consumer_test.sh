@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The installed package works for another CMake project: `cmake --install` into a fresh prefix
 # under the build directory must hold every module's static library and headers, the CLI and the
-# package config; tests/install_consumer, configured with only CMAKE_PREFIX_PATH pointing there,
+# package config (and the Python module, when built); tests/install_consumer, configured with only CMAKE_PREFIX_PATH pointing there,
 # must find meshprep in that prefix (not in the source or build tree), build, and measure the
 # bundled femur (7,798 faces, closed).
 # Usage: install_consumer_test.sh CMAKE BUILD_DIR SOURCE_DIR MODULE_TARGETS (comma-separated)
@@ -28,6 +28,15 @@ for file in meshprepConfig.cmake meshprepConfigVersion.cmake meshprepTargets.cma
   [ -f "$config/$file" ] || fail "$file not installed"
 done
 "$prefix/bin/meshprep" --version > /dev/null || fail "the installed CLI does not run"
+# The Python module, when it was built: installed into the prefix's Python folder, importable from there.
+if [ -d "$build/python/meshprep" ]; then
+  installed=$(compgen -G "$prefix/lib/python3*/*-packages/meshprep/__init__.py" | head -1) \
+    || fail "the Python module is built but not installed"
+  site=$(dirname "$(dirname "$installed")")
+  (cd "$work" && PYTHONPATH=$site /usr/bin/python3 -c \
+    "import sys, meshprep; assert meshprep.__file__.startswith(sys.argv[1]), meshprep.__file__" "$site") \
+    || fail "the installed Python module does not import from $site"
+fi
 
 "$cmake" -S "$source/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON > "$work/configure.log" 2>&1 \

@@ -156,7 +156,8 @@ template py::array index_view<3>(const std::vector<std::array<std::uint32_t, 3>>
 template py::array index_view<4>(const std::vector<std::array<std::uint32_t, 4>>&, const py::handle&);
 
 py::array tags_view(const std::vector<int>& tags, const py::handle& owner) {
-  return read_only(py::array_t<int>({static_cast<py::ssize_t>(tags.size())}, tags.data(), owner));
+  const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(tags.size())};
+  return read_only(py::array_t<int>(shape, tags.data(), owner));
 }
 
 py::dict names_dict(const TagNames& names) {
