@@ -2,7 +2,7 @@
 
 #include "meshprep/core/errors.h"
 
-#include <cmath>
+#include <algorithm>
 
 namespace meshprep::python {
 namespace {

@@ -19,8 +19,6 @@
 
 #include <pybind11/stl.h>
 
-#include <filesystem>
-
 namespace meshprep::python {
 namespace {
 
@@ -108,6 +106,7 @@ PipelineConfig command_defaults() {
   config.smooth.params = SmoothParams{};
   config.enhance.params = EnhanceParams{};
   config.quality.params = QualityParams{};
+  config.tetrahedralize.keep_surface = TetParams{}.keep_surface;  // `meshprep tetrahedralize`'s, not "auto"
   return config;
 }
 
@@ -445,7 +444,9 @@ void register_stages(py::module_& m) {
   docs["repair"] = doc("Mends a dirty surface (meshprep repair).", kRepair);
   docs["reconstruct"] = doc("A surface from an (n, 3) point array (meshprep reconstruct).", kReconstruct);
   docs["quality"] = doc("The quality report of a Surface (against a reference) or a TetMesh (meshprep quality).", kQuality);
-  docs["tetrahedralize"] = doc("Tets of a closed surface, improved and judged (meshprep tetrahedralize).", kTetrahedralize);
+  docs["tetrahedralize"] = doc("Tets of a closed surface, improved and judged (meshprep tetrahedralize). An open height "
+                               "field is closed into a block only when extrude_base or extrude_base_relative is given.",
+                               kTetrahedralize);
   docs["improve"] = doc("Improves a TetMesh and judges it (meshprep improve); order=2 makes it second-order.", kImprove);
   docs["pipeline"] = doc("The whole pipeline (meshprep pipeline) on a file, a Surface or an (n, 3) point array; outdir "
                          "gets its outputs.", kPipeline);
