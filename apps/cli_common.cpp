@@ -94,10 +94,6 @@ void check_output_files(const std::vector<std::string>& inputs, const std::vecto
   for (const std::string& output : output_files) check_writable(output, folders);
 }
 
-void note_taken_back(const std::vector<TakenBack>& taken_back) {
-  for (const TakenBack& t : taken_back) std::cerr << "meshprep: note: " << describe(t) << '\n';
-}
-
 void print_messages(const CommandMessages& messages) {
   for (const std::string& message : messages) std::cerr << "meshprep: " << message << '\n';
 }

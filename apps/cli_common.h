@@ -51,11 +51,8 @@ enum class MissingFolders { refused, made };
 void check_output_files(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
                         MissingFolders folders = MissingFolders::refused);
 
-/// One note on stderr per piece of work a guard took back ("meshprep: note: enhance: remeshing
-/// taken back (self-intersection): ..."); the --json record lists them under guards_taken_back.
-void note_taken_back(const std::vector<TakenBack>& taken_back);
-
-/// A command's notes and warnings on stderr, each as "meshprep: <message>".
+/// A command's notes and warnings on stderr, each as "meshprep: <message>" (among them one per
+/// piece of work a guard took back, add_taken_back_notes; --json lists those under guards_taken_back).
 void print_messages(const CommandMessages& messages);
 
 /// The hooks of a command run from the terminal: `draw` shows its progress (may be empty), Ctrl-C

@@ -67,8 +67,6 @@ void register_exceptions(py::module_& module) {
 CallControl::CallControl(py::object progress, CancelToken* cancel, std::size_t threads)
     : progress_(std::move(progress)), cancel_(cancel), threads_(threads) {}
 
-CallControl::~CallControl() = default;
-
 CommandHooks CallControl::hooks(const std::string& stage) {
   set_stage(stage);
   CommandHooks hooks;

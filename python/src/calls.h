@@ -42,7 +42,6 @@ class CallControl {
   /// With the GIL held. `progress` may be None, `cancel` null; `threads` > 0 bounds the threads
   /// of this call's parallel parts (a TBB arena of its own, so concurrent calls keep their own bounds).
   CallControl(py::object progress, CancelToken* cancel, std::size_t threads);
-  ~CallControl();
 
   /// Hooks for the command, usable without the GIL; `stage` names the work to the callback.
   CommandHooks hooks(const std::string& stage);
