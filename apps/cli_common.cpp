@@ -1,6 +1,7 @@
 #include "cli_common.h"
 #include "cli_parameters.h"
 #include "interrupt.h"
+#include "progress_bar.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -100,10 +102,26 @@ void print_messages(const CommandMessages& messages) {
 
 CommandHooks terminal_hooks(std::function<void(double)> draw) {
   CommandHooks hooks;
-  hooks.progress = stoppable(draw ? std::move(draw) : [](double) {});
   hooks.cancelled = stop_requested;
-  hooks.step = [](const std::string& what) {
-    if (::isatty(STDERR_FILENO)) std::cerr << "meshprep: " << what << '\n';
+  hooks.deadline = time_limit();
+  if (draw) {
+    hooks.progress = stoppable(std::move(draw));
+    hooks.step = [](const std::string& what) {
+      if (::isatty(STDERR_FILENO)) std::cerr << "meshprep: " << what << '\n';
+    };
+    return hooks;
+  }
+  // Each long step gets its own bar, labelled with the step; the cancellation polls (every 50 ms
+  // while TetGen runs) keep it moving off a terminal. Polls from other threads leave it alone.
+  auto bar = std::make_shared<std::unique_ptr<ProgressBar>>();
+  const std::thread::id caller = std::this_thread::get_id();
+  hooks.step = [bar](const std::string& what) { *bar = std::make_unique<ProgressBar>(what); };
+  hooks.progress = stoppable([bar](double fraction) {
+    if (*bar) (*bar)->update(fraction);
+  });
+  hooks.cancelled = [bar, caller] {
+    if (*bar && std::this_thread::get_id() == caller) (*bar)->tick();
+    return stop_requested();
   };
   return hooks;
 }

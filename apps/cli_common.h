@@ -2,6 +2,7 @@
 // Pieces shared by the subcommands: how results are emitted and how failures become exit codes.
 
 #include "meshprep/commands/outcome.h"
+#include "meshprep/core/exit_codes.h"
 #include "meshprep/core/io.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/fem/export.h"
@@ -20,11 +21,14 @@
 
 namespace meshprep::cli {
 
-/// Exit codes of the CLI contract.
-enum ExitCode : int { kSuccess = 0, kWorkFailed = 1, kBadInput = 2 };  // a signal: 128 + its number (interrupt.h)
+/// Exit codes of the CLI contract (meshprep/core/exit_codes.h), as main and the commands return them.
+inline constexpr int kSuccess = as_int(ExitCode::ready);
+inline constexpr int kNotReady = as_int(ExitCode::not_ready);
+inline constexpr int kBadInput = as_int(ExitCode::bad_input);
 
-/// The work could not be done (exit 1), with the reason.
-class WorkFailed : public std::runtime_error {
+/// The work is done and written, but the result is not ready (exit 1): the message names why and
+/// where the outputs are.
+class NotReady : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

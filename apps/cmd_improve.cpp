@@ -58,7 +58,8 @@ int run_improve(const ImproveOptions& o) {
     outcome = improve_command(std::move(tets), reference ? &*reference : nullptr, finishing, {o.input, o.output},
                               terminal_hooks());
   } catch (const Cancelled&) {
-    throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
+    if (stop_requested()) throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
+    throw;  // the time limit: main says so
   }
   print_messages(outcome.messages);
   TetExportReport written;
@@ -80,7 +81,7 @@ int run_improve(const ImproveOptions& o) {
   }
   if (outcome.fem_ready()) return kSuccess;
   print_failed_thresholds(o.input, outcome.verdict.checks, &*outcome.improvement);
-  throw WorkFailed(o.input + ": not FEM-ready: the tets fail " + failed_names(outcome.verdict) + " (above); " + o.output +
+  throw NotReady(o.input + ": not FEM-ready: the tets fail " + failed_names(outcome.verdict) + " (above); " + o.output +
                    " is written");
 }
 

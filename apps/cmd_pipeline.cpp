@@ -2,7 +2,7 @@
 //   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2] [--binary | --ascii] [--order 1|2]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
-//   [--fail-on CONDITIONS] [--threads N] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
+//   [--fail-on CONDITIONS] [--threads N] [--time-limit S] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
 #include "cli_common.h"
 #include "cli_parameters.h"
 #include "interrupt.h"
@@ -40,7 +40,6 @@ struct PipelineOptions {
   EncodingFlags encoding;
   double ratio = 0, extrude_base = 0;
   std::size_t target_faces = 0, threads = 0;
-  unsigned timeout = 0;
   bool repair = false, quiet = false, print_config = false, config_keys = false;
 };
 
@@ -121,7 +120,7 @@ int exit_code(const PipelineOptions& o, const PipelineResult& result, const Pipe
   if (!held.empty())
     reasons += (reasons.empty() ? "" : "; ") + std::to_string(held.size()) + " --fail-on condition(s) hold (above)";
   if (reasons.empty()) return kSuccess;
-  throw WorkFailed(o.input + ": " + reasons + "; the outputs are written in " + o.outdir + " (see " +
+  throw NotReady(o.input + ": " + reasons + "; the outputs are written in " + o.outdir + " (see " +
                    (std::filesystem::path(o.outdir) / "report.html").string() + ")");
 }
 
@@ -179,15 +178,14 @@ int run_pipeline_command(const PipelineOptions& o) {
       for (const TakenBack& t : s.taken_back) log << "  " << describe(t) << std::endl;
     };
   }
-  arm_timeout(o.timeout);
+  observer.deadline = time_limit();
   PipelineResult result;
   try {
     result = run_pipeline(o.input, config, observer);
   } catch (const Cancelled&) {
-    throw Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : stop_reason()) +
-                    "; nothing written");
+    if (stop_requested()) throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
+    throw;  // the time limit: main says so
   }
-  arm_timeout(0);  // the outputs are written whole, whatever the clock says
   bar.reset();
 
   nlohmann::ordered_json run;
@@ -260,9 +258,6 @@ Action add_pipeline_command(CLI::App& app) {
                   "Exit 1 (the outputs written) if any condition on report.json holds, as quality --fail-on, e.g. "
                   "\"tets.tet_quality.min_dihedral_deg.p5<20,quality.radius_ratio.p95>2\"");
   add_threads_option(*cmd, o->threads);
-  cmd->add_option("--timeout", o->timeout,
-                  "Stop after this many seconds (exit 1, nothing written); Ctrl-C stops at the next safe point (exit 130)")
-      ->check(CLI::Range(1u, 1000000u));
   cmd->add_flag("--quiet", o->quiet, "No progress bars and no stage summaries");
   cmd->add_option("--json", o->json, "Write the run's summary (report.json) to FILE ('-' = stdout)");
   cmd->add_flag("--print-config", o->print_config,

@@ -58,7 +58,7 @@ int apply_gate(const std::vector<GateCondition>& gate, const nlohmann::ordered_j
   std::cerr << "meshprep: quality gate failed:";
   for (const auto& c : failed) std::cerr << ' ' << c.text << " (is " << c.actual.dump() << ')';
   std::cerr << '\n';
-  return kWorkFailed;
+  return kNotReady;
 }
 
 int run_tet_quality(const QualityOptions& o, const std::vector<GateCondition>& gate) {

@@ -3,7 +3,7 @@
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
 //   [--fem-check] [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
-//   [--timeout SECONDS] [--threads N] [--order 1|2] [--json FILE|-]
+//   [--time-limit S] [--threads N] [--order 1|2] [--json FILE|-]
 #include "cli_common.h"
 #include "cli_parameters.h"
 #include "interrupt.h"
@@ -41,11 +41,11 @@ struct TetOptions {
   ThresholdFlags thresholds;
   ImproveFlags improve;
   EncodingFlags encoding;
-  unsigned timeout = 0;
   std::size_t threads = 0;
 };
 
-// A surface that is not FEM-ready: its faces in --diagnose's file, one line per problem, exit 1.
+// A surface that is not FEM-ready: its faces in --diagnose's file, one line per problem, exit 2
+// (the input cannot be tetrahedralized; found before TetGen runs).
 [[noreturn]] void fail_unready(const TetOptions& o, const TriangleSoup& soup, const Readiness& readiness,
                                const std::string& failure) {
   if (!o.diagnose.empty()) write_soup(diagnosis_mesh(soup, readiness), o.diagnose);
@@ -55,7 +55,7 @@ struct TetOptions {
     std::cerr << "meshprep: " << o.input << ": not FEM-ready: " << p.check << ": " << p.what << " (faces " << faces
               << (p.faces.size() > 8 ? " ..." : "") << "); " << p.hint << '\n';
   }
-  throw WorkFailed(o.input + ": " + failure +
+  throw InvalidInput(o.input + ": " + failure +
                    (o.diagnose.empty() ? "; --diagnose FILE writes the offending faces" : "; offending faces in " + o.diagnose));
 }
 
@@ -69,15 +69,13 @@ int run_tetrahedralize(const TetOptions& o) {
   command.finishing.improve = !o.improve.off;
   command.finishing.improve_params = o.improve.applied_to({});
   command.finishing.thresholds = o.thresholds.applied_to({});
-  arm_timeout(o.timeout);
   TetOutcome outcome;
   try {
     outcome = tetrahedralize_command(soup, command, {o.input, o.output}, terminal_hooks());
   } catch (const Cancelled&) {
-    throw Cancelled(o.input + ": " + (timed_out() ? "timed out after " + std::to_string(o.timeout) + " s" : stop_reason()) +
-                    "; nothing written");
+    if (stop_requested()) throw Cancelled(o.input + ": " + stop_reason() + "; nothing written");
+    throw;  // the time limit: main says so
   }
-  arm_timeout(0);  // from here on the outputs are written whole
   print_messages(outcome.messages);
   nlohmann::ordered_json json;
   json["input"] = o.input;
@@ -86,7 +84,7 @@ int run_tetrahedralize(const TetOptions& o) {
   if (!outcome.failure.empty()) {
     if (!o.json.empty()) emit_json(json, o.json);
     if (outcome.readiness && !outcome.readiness->ready()) fail_unready(o, soup, *outcome.readiness, outcome.failure);
-    throw WorkFailed(o.input + ": " + outcome.failure);
+    throw SolverError(o.input + ": " + outcome.failure);
   }
   TetExportReport written;
   write_tet_mesh(outcome.tets, o.output, options, &written);
@@ -109,7 +107,7 @@ int run_tetrahedralize(const TetOptions& o) {
   }
   if (outcome.fem_ready()) return kSuccess;
   print_failed_thresholds(o.input, outcome.verdict.checks, outcome.improvement ? &*outcome.improvement : nullptr);
-  throw WorkFailed(o.input + ": not FEM-ready: the tets fail " + failed_names(outcome.verdict) + " (above); " + o.output +
+  throw NotReady(o.input + ": not FEM-ready: the tets fail " + failed_names(outcome.verdict) + " (above); " + o.output +
                    " is written");
 }
 
@@ -143,9 +141,6 @@ Action add_tetrahedralize_command(CLI::App& app) {
   cmd->add_flag("--fem-check", o->command.fem_check, "Solve a P1 Poisson problem with a known solution on the tets and report errors");
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/true);
   add_threshold_options(*cmd, o->thresholds);
-  cmd->add_option("--timeout", o->timeout,
-                  "Stop TetGen after this many seconds (exit 1, nothing written); Ctrl-C stops it too (exit 130)")
-      ->check(CLI::Range(1u, 1000000u));
   add_auto_parameter(*cmd, patch_parameters().feature_angle_deg, o->command.patches.feature_angle_deg);
   add_patch_edits(*cmd, o->command.patches);
   add_order_option(*cmd, o->command.finishing.element_order);

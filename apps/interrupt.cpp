@@ -2,16 +2,14 @@
 
 #include "meshprep/core/errors.h"
 
-#include <unistd.h>
-
 #include <csignal>
 
 namespace meshprep::cli {
 namespace {
 
 volatile std::sig_atomic_t stop_flag = 0;
-volatile std::sig_atomic_t timeout_flag = 0;
 volatile std::sig_atomic_t stop_signal_number = 0;
+Deadline deadline;
 
 void on_stop_signal(int signal_number) {
   if (stop_flag) {  // the second Ctrl-C (or SIGTERM): the sender insists
@@ -23,11 +21,6 @@ void on_stop_signal(int signal_number) {
   stop_flag = 1;
 }
 
-void on_alarm(int) {
-  timeout_flag = 1;
-  stop_flag = 1;
-}
-
 }  // namespace
 
 void install_interrupt_handlers() {
@@ -35,20 +28,17 @@ void install_interrupt_handlers() {
   action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
-  action.sa_handler = on_alarm;
-  sigaction(SIGALRM, &action, nullptr);
 }
 
-void arm_timeout(unsigned seconds) { ::alarm(seconds); }
+void set_time_limit(double seconds) { deadline = Deadline::in_seconds(seconds); }
+
+const Deadline& time_limit() { return deadline; }
 
 bool stop_requested() { return stop_flag != 0; }
-
-bool timed_out() { return timeout_flag != 0; }
 
 int stopped_exit_code() { return 128 + (stop_signal_number != 0 ? stop_signal_number : SIGINT); }
 
 std::string stop_reason() {
-  if (timed_out()) return "timed out";
   if (stop_signal_number == SIGTERM) return "terminated (SIGTERM)";
   if (stop_signal_number == SIGHUP) return "hung up (SIGHUP)";
   return "interrupted";

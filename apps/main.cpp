@@ -4,6 +4,7 @@
 #include "solver_logging.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/exit_codes.h"
 #include "meshprep/core/heap_policy.h"
 
 #include <algorithm>
@@ -42,6 +43,14 @@ std::string unknown_command(const CLI::App& app, const std::string& word) {
   return "unknown command '" + word + "'" + (closest.empty() ? "" : " (did you mean '" + closest + "'?)");
 }
 
+// "INPUT: " of the command's input (its first positional argument), for the messages main prints
+// ("" without one).
+std::string input_of(const CLI::App& command) {
+  const std::vector<const CLI::Option*> positionals =
+      command.get_options([](const CLI::Option* option) { return option->get_positional(); });
+  return !positionals.empty() && positionals.front()->count() > 0 ? positionals.front()->as<std::string>() + ": " : "";
+}
+
 const CLI::App* find_command(const CLI::App& app, const std::string& name) {
   for (const CLI::App* command : app.get_subcommands({}))
     if (command->check_name(name)) return command;
@@ -55,7 +64,9 @@ int main(int argc, char** argv) {
   cli::quiet_solver_logging(argv[0]);
   CLI::App app{"meshprep " MESHPREP_VERSION
                " - turn raw geometry into meshes a finite-element solver can trust.\n"
-               "Exit codes: 0 success, 1 the work could not be done (with the reason), 2 bad usage or unreadable input.",
+               "Exit codes (every command): 0 done and FEM-ready (or the command's goal met), 1 done and written but "
+               "not ready (the report says why), 2 bad input or arguments (nothing written), 3 failed while working "
+               "(nothing written), 124 --time-limit reached with nothing usable, 130 interrupted (143 SIGTERM, 129 SIGHUP).",
                "meshprep"};
   app.set_version_flag("--version", "meshprep " MESHPREP_VERSION);
   app.require_subcommand(1);
@@ -80,6 +91,15 @@ int main(int argc, char** argv) {
   CLI::App* help = app.add_subcommand("help", "Show this help, or a command's (meshprep help COMMAND)");
   std::string help_topic;
   help->add_option("command", help_topic, "The command to describe");
+  // One --time-limit for every command: the whole command's deadline (interrupt.h).
+  double time_limit_seconds = 0;
+  for (CLI::App* command : app.get_subcommands({}))
+    if (command != help)
+      command
+          ->add_option("--time-limit,--timeout", time_limit_seconds,
+                       "Stop the whole command after this many seconds: the tet improvement ends with its best tets "
+                       "(\"stopped\": \"time limit\" in --json), any other step with nothing written (exit 124)")
+          ->check(cli::positive());
   cli::refuse_non_finite_numbers(app);
 
   // CLI11 takes an unknown first word for a stray argument ("A subcommand is required").
@@ -110,33 +130,32 @@ int main(int argc, char** argv) {
     return cli::kBadInput;
   }
   cli::install_interrupt_handlers();
+  cli::set_time_limit(time_limit_seconds);
+  const CLI::App* command = nullptr;
+  for (const auto& [candidate, action] : actions)
+    if (candidate->parsed()) command = candidate;
+  if (command == nullptr) return cli::kBadInput;
   try {
-    for (const auto& [command, action] : actions)
-      if (command->parsed()) return action();
-    return cli::kBadInput;
+    return actions.at(command)();
+  } catch (const cli::NotReady& e) {  // written, not ready
+    std::cerr << "meshprep: not ready: " << e.what() << '\n';
+    return cli::kNotReady;
   } catch (const Cancelled& e) {
-    // A signal: 128 + its number, as a shell reports a process it ended; a timeout: the work
-    // could not be done in time.
-    const bool timeout = cli::timed_out();
-    std::cerr << "meshprep: " << (timeout ? "failed: " : "") << e.what() << '\n';
-    return timeout ? cli::kWorkFailed : cli::stopped_exit_code();
-  } catch (const InvalidInput& e) {
-    std::cerr << "meshprep: error: " << e.what() << '\n';
-    return cli::kBadInput;
-  } catch (const WriteError& e) {  // the input was fine; the result cannot be delivered
-    std::cerr << "meshprep: failed: " << e.what() << '\n';
-    return cli::kWorkFailed;
-  } catch (const IoError& e) {
-    std::cerr << "meshprep: error: " << e.what() << '\n';
-    return cli::kBadInput;
-  } catch (const cli::WorkFailed& e) {
-    std::cerr << "meshprep: failed: " << e.what() << '\n';
-    return cli::kWorkFailed;
+    // A signal: 128 + its number, as a shell reports a process it ended. Otherwise the deadline
+    // came before anything usable existed (the improvement, which has its best tets, ends there).
+    if (cli::stop_requested() || !cli::time_limit().passed()) {
+      std::cerr << "meshprep: " << e.what() << '\n';
+      return cli::stopped_exit_code();
+    }
+    std::cerr << "meshprep: failed: " << input_of(*command) << "the time limit (--time-limit "
+              << CLI::detail::to_string(time_limit_seconds) << " s) came before anything usable was made; nothing written\n";
+    return as_int(ExitCode::time_limit);
   } catch (const std::bad_alloc&) {
-    std::cerr << "meshprep: failed: out of memory\n";
-    return cli::kWorkFailed;
+    std::cerr << "meshprep: failed: " << input_of(*command) << "out of memory; nothing written\n";
+    return as_int(ExitCode::failed);
   } catch (const std::exception& e) {
-    std::cerr << "meshprep: failed: " << e.what() << '\n';
-    return cli::kWorkFailed;
+    const ExitCode code = exit_code_of(e);
+    std::cerr << "meshprep: " << (code == ExitCode::bad_input ? "error: " : "failed: ") << e.what() << '\n';
+    return as_int(code);
   }
 }

@@ -62,40 +62,40 @@ lying_count_fewer*.ply  *                                  2  unexpected data af
 lying_count_huge*.ply   *                                  2  truncated: header announces 3000000000 vertices, data has 14
 lying_count_more.off    *                                  2  truncated: header announces 13 faces, found 12
 sphere*                 *                                  0
-hole*                   tetrahedralize                     1  not FEM-ready
-hole*                   pipeline                           1  not FEM-ready: the surface is open
+hole*                   tetrahedralize                     2  not FEM-ready
+hole*                   pipeline                           2  not FEM-ready: the surface is open
 hole*                   *                                  0
 flipped*                simplify,smooth,enhance,pipeline   2  face 5 is oriented against face 2
-flipped*                tetrahedralize                     1  not FEM-ready \(oriented\)
+flipped*                tetrahedralize                     2  not FEM-ready \(oriented\)
 flipped*                *                                  0
 nonmanifold_edge*       simplify,smooth,enhance,pipeline   2  face 12 makes the edge [0-9]+-[0-9]+ non-manifold \(3 faces
 nonmanifold_vertex*     simplify,smooth,enhance,pipeline   2  face 4 makes vertex 0 non-manifold \(2 fans
-nonmanifold_edge*       tetrahedralize                     1  not FEM-ready \(closed, manifold\)
-nonmanifold_vertex*     tetrahedralize                     1  not FEM-ready \(manifold\)
+nonmanifold_edge*       tetrahedralize                     2  not FEM-ready \(closed, manifold\)
+nonmanifold_vertex*     tetrahedralize                     2  not FEM-ready \(manifold\)
 nonmanifold_*           *                                  0
 duplicate_face*         simplify,smooth,enhance,pipeline   2  face 12 repeats face 3
-duplicate_face*         tetrahedralize                     1  not FEM-ready
+duplicate_face*         tetrahedralize                     2  not FEM-ready
 duplicate_face*         *                                  0
-zero_area*              tetrahedralize                     1  not FEM-ready \(degenerate_faces
+zero_area*              tetrahedralize                     2  not FEM-ready \(degenerate_faces
 zero_area*              pipeline                           0
 zero_area*              *                                  0
 repeated_corner*        simplify,smooth,enhance,pipeline   2  face 12 has two corners at vertex 0
-repeated_corner*        tetrahedralize                     1  not FEM-ready \(manifold\)
+repeated_corner*        tetrahedralize                     2  not FEM-ready \(manifold\)
 repeated_corner*        *                                  0
 isolated_vertices*      *                                  0
-self_intersecting*      tetrahedralize                     1  not FEM-ready \(self_intersections\)
+self_intersecting*      tetrahedralize                     2  not FEM-ready \(self_intersections\)
 self_intersecting*      pipeline                           1  not FEM-ready: [0-9]+ pairs of faces intersect
 self_intersecting*      *                                  0
 touching*.stl           simplify,smooth,enhance,pipeline   2  face 12 makes the edge [0-9]+-[0-9]+ non-manifold \(4 faces
-touching*.stl           tetrahedralize                     1  not FEM-ready
-touching*               tetrahedralize                     1  not FEM-ready \(self_intersections\)
+touching*.stl           tetrahedralize                     2  not FEM-ready
+touching*               tetrahedralize                     2  not FEM-ready \(self_intersections\)
 touching*               pipeline                           1  not FEM-ready: [0-9]+ pairs of faces intersect
 touching*               *                                  0
 offset_1e9-binary.stl   simplify,smooth,enhance,pipeline   2  face 0 has two corners at vertex 0
-offset_1e9-binary.stl   tetrahedralize                     1  not FEM-ready
+offset_1e9-binary.stl   tetrahedralize                     2  not FEM-ready
 offset_1e9.obj          convert                            2  binary STL stores float32 coordinates
 offset_1e9*             *                                  0
-one_face*               tetrahedralize                     1  not FEM-ready \(closed\)
+one_face*               tetrahedralize                     2  not FEM-ready \(closed\)
 one_face*               *                                  0
 EOF
 
@@ -149,7 +149,7 @@ run_one() {
 
   [ "$before" = "$after" ] || report "the input changed"
   case $rc in
-    0 | 1 | 2) ;;
+    0 | 1 | 2 | 3) ;;
     124) report "hangs (killed after 60 s)" ;;
     *) report "exit $rc$( [ "$rc" -gt 128 ] && echo " (signal $((rc - 128)))")" ;;
   esac
@@ -158,11 +158,11 @@ run_one() {
   [ -z "$strays" ] || report "temporary files left: $strays"
   if [ "$rc" = 0 ]; then
     [ -s "$out" ] || [ -s "$out/report.json" ] || report "exit 0 but no output $out"
-  elif [ "$rc" = 1 ] || [ "$rc" = 2 ]; then
+  else
     local errors
-    errors=$(grep -cE '^meshprep: (error|failed): ' "$dir/stderr")
-    [ "$errors" = 1 ] || report "$errors lines start with 'meshprep: error:' or 'meshprep: failed:', expected 1"
-    grep -E '^meshprep: (error|failed): ' "$dir/stderr" | grep -qF "$name" || report "the error does not name the input"
+    errors=$(grep -cE '^meshprep: (error|failed|not ready): ' "$dir/stderr")
+    [ "$errors" = 1 ] || report "$errors lines start with 'meshprep: error:', 'failed:' or 'not ready:', expected 1"
+    grep -E '^meshprep: (error|failed|not ready): ' "$dir/stderr" | grep -qF "$name" || report "the error does not name the input"
     if [ "$cmd" = pipeline ]; then
       local kept
       kept=$(ls -A "$out" 2> /dev/null | tr '\n' ' ')
@@ -196,7 +196,7 @@ PY
     if [ "$rc" != "$code" ]; then
       report "exit $rc, expected $code: $(head -c 300 "$dir/stderr")"
     elif [ "$rc" != 0 ] && [ "$message" != - ] &&
-      ! grep -E '^meshprep: (error|failed): ' "$dir/stderr" | grep -qE -- "$message"; then
+      ! grep -E '^meshprep: (error|failed|not ready): ' "$dir/stderr" | grep -qE -- "$message"; then
       report "the message does not match '$message': $(head -c 300 "$dir/stderr")"
     fi
   fi
@@ -336,11 +336,11 @@ expect_exit "--json link to /dev/null" 0 $?
 ln -s /dev/stdout stdout.csv
 "$bin" quality "$sphere" --csv stdout.csv 2> err.txt | head -1 > csv_head.txt
 [ "$(cut -d, -f1-3 csv_head.txt)" = "face,v0,v1" ] && [ -L stdout.csv ] && ok || bad "--csv to /dev/stdout: nothing reached the pipe"
-# A full device is a write failure once the work is done: exit 1, naming the file (through a link,
+# A full device is a write failure once the work is done: exit 3, naming the file (through a link,
 # as /dev/null above).
 ln -s /dev/full full.json
 "$bin" quality "$sphere" --json full.json > /dev/null 2> err.txt
-expect_exit "--json link to /dev/full" 1 $?
+expect_exit "--json link to /dev/full" 3 $?
 one_error "--json link to /dev/full" "full.json: cannot write: No space left on device"
 [ -L full.json ] && [ -c /dev/full ] && ok || bad "the link to /dev/full was replaced"
 

@@ -19,9 +19,9 @@ for p in python3 /usr/bin/python3; do $p -c "import meshio, numpy" 2>/dev/null &
 expect_exit "cube" 1 $?
 grep -qE "^meshprep: cube.off: not FEM-ready: smallest dihedral angle [0-9.]+ deg < 10 deg \(min_dihedral_deg\)$" err.txt &&
   ok || bad "cube: the failed threshold is not named with its figure"
-grep -qx "meshprep: failed: cube.off: not FEM-ready: the tets fail min_dihedral_deg (above); cube.msh is written" err.txt &&
+grep -qx "meshprep: not ready: cube.off: not FEM-ready: the tets fail min_dihedral_deg (above); cube.msh is written" err.txt &&
   ok || bad "cube: the failure line"
-[ "$(grep -c "^meshprep: failed:" err.txt)" = 1 ] && ok || bad "cube: one failure line"
+[ "$(grep -c "^meshprep: not ready:" err.txt)" = 1 ] && ok || bad "cube: one failure line"
 python3 -c "
 import json; j = json.load(open('out.json')); q = j['tet_quality']
 assert abs(q['volume'] - 1) < 1e-9 and q['tetrahedra'] >= 100 and q['radius_edge_ratio']['max'] <= 1.414 + 1e-9, q
@@ -153,7 +153,7 @@ expect_exit "--max-inverted-tets -1" 2 $?
 "$bin" tetrahedralize sliver.off -o sliver.vtu --radius-edge 0 --keep-surface --json out.json > /dev/null 2> err.txt
 expect_exit "sliver" 1 $?
 has_sliver_verdict && ok || bad "sliver: the failed thresholds"
-grep -qx "meshprep: failed: sliver.off: not FEM-ready: the tets fail min_dihedral_deg, max_dihedral_deg (above); sliver.vtu is written" err.txt &&
+grep -qx "meshprep: not ready: sliver.off: not FEM-ready: the tets fail min_dihedral_deg, max_dihedral_deg (above); sliver.vtu is written" err.txt &&
   ok || bad "sliver: the failure line"
 [ -s sliver.vtu ] && ok || bad "sliver: sliver.vtu not written"
 python3 -c "
@@ -179,7 +179,7 @@ for case in open_box:closed two_boxes:self_intersections duplicate:duplicate_fac
   name=${case%%:*} check=${case#*:}
   rm -f out.json
   "$bin" tetrahedralize $name.off -o $name.msh --diagnose $name-bad.off --json out.json > /dev/null 2> err.txt
-  expect_exit "$name" 1 $?
+  expect_exit "$name" 2 $?
   grep -q "not FEM-ready: $check" err.txt && ok || bad "$name: no '$check' diagnosis"
   [ ! -e $name.msh ] && ok || bad "$name: a tet mesh was written"
   [ -s $name-bad.off ] && ok || bad "$name: no diagnosis mesh"
@@ -212,7 +212,7 @@ assert q['components'] == 1 and q['self_intersections'] == 0 and abs(q['volume']
   ok || bad "repair crossing boxes: the union's counts or volume"
 # The open box is a bowl, every face turned up or sideways: a sheet's outline by default (left
 # open, named, nothing written), a hole with --max-hole 3 (filled: the closed cube, 12 faces).
-"$bin" repair open_box.off -o box_filled.off > stdout.txt 2> err.txt; expect_exit "repair open box" 1 $?
+"$bin" repair open_box.off -o box_filled.off > stdout.txt 2> err.txt; expect_exit "repair open box" 3 $?
 grep -q "filled 0 holes (1 left open)" err.txt && grep -q "not mended yet: 4 border edges" err.txt &&
   [ ! -e box_filled.off ] && ok || bad "repair open box: the message, or a file written"
 "$bin" repair open_box.off -o box_filled.off --max-hole 3 --json box.json > stdout.txt 2> err.txt
@@ -233,7 +233,7 @@ for auto in "" "--max-hole auto"; do
     ok || bad "repair half top $auto: the done line"
 done
 "$bin" repair half_top.off -o half_top_filled.off --max-hole 0.5 > stdout.txt 2> err.txt
-expect_exit "repair half top --max-hole 0.5" 1 $?
+expect_exit "repair half top --max-hole 0.5" 3 $?
 
 # Real TetGen output in every format, read back by meshio and gmsh with the counts and the volume.
 mkdir -p formats
@@ -310,8 +310,8 @@ expect_exit "terrain block" 0 $?
 python3 -c "
 import json; j = json.load(open('out.json')); q = j['tet_quality']; assert q['tetrahedra'] > 0 and q['inverted_tets'] == 0, q
 assert j['fem_ready'] == (q['min_dihedral_deg']['min'] >= 10 and q['max_dihedral_deg']['max'] <= 165), j" && ok || bad "terrain json"
-"$bin" tetrahedralize terrain.off -o terrain.msh > /dev/null 2> err.txt; expect_exit "terrain without extrusion" 1 $?
-"$bin" tetrahedralize cube.off -o cube2.msh --extrude-base 1 > /dev/null 2> err.txt; expect_exit "extruding a closed surface" 1 $?
+"$bin" tetrahedralize terrain.off -o terrain.msh > /dev/null 2> err.txt; expect_exit "terrain without extrusion" 2 $?
+"$bin" tetrahedralize cube.off -o cube2.msh --extrude-base 1 > /dev/null 2> err.txt; expect_exit "extruding a closed surface" 2 $?
 grep -q "cube.off: cannot extrude" err.txt && ok || bad "extrusion error names the file"
 
 # `quality` on tet meshes: the tets and volume tetrahedralize reported, the closed boundary of the

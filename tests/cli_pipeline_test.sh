@@ -150,7 +150,7 @@ echo '{"enhance": {"enabled": false}, "tetrahedralize": {"radius_edge": 0, "keep
 "$bin" pipeline sliver.off -o sliver --config one_tet.json --quiet > stdout.txt 2> err.txt
 expect_exit "sliver" 1 $?
 has_sliver_verdict && ok || bad "sliver: the failed thresholds"
-grep -qx "meshprep: failed: sliver.off: not FEM-ready: the tets fail min_dihedral_deg, max_dihedral_deg (above); the outputs are written in sliver (see sliver/report.html)" err.txt &&
+grep -qx "meshprep: not ready: sliver.off: not FEM-ready: the tets fail min_dihedral_deg, max_dihedral_deg (above); the outputs are written in sliver (see sliver/report.html)" err.txt &&
   ok || bad "sliver: the failure line"
 [ "$(ls sliver | tr '\n' ' ')" = "pipeline.json report.html report.json report.vtu surface.ply tets.msh " ] && ok ||
   bad "sliver: outputs $(ls sliver)"
@@ -180,7 +180,7 @@ expect_exit "sliver replayed with its thresholds" 0 $?
 expect_exit "--fail-on holds" 1 $?
 grep -qE "^meshprep: sliver.off: --fail-on: tets.tet_quality.scaled_jacobian.min<0.1 holds \(is 0.03[0-9]+\)$" err.txt &&
   ! grep -q "quality.faces>100" err.txt && ok || bad "--fail-on: the condition that holds"
-grep -qx "meshprep: failed: sliver.off: 1 --fail-on condition(s) hold (above); the outputs are written in gate (see gate/report.html)" err.txt &&
+grep -qx "meshprep: not ready: sliver.off: 1 --fail-on condition(s) hold (above); the outputs are written in gate (see gate/report.html)" err.txt &&
   [ -s gate/tets.msh ] && ok || bad "--fail-on: the failure line and the outputs"
 "$bin" pipeline sliver.off -o gate2 --config sliver_ok/pipeline.json --quiet --fail-on "fem_ready=false" 2> err.txt
 expect_exit "--fail-on that does not hold" 0 $?
@@ -218,9 +218,9 @@ expect_exit "--ratio with --target-faces" 2 $?
 "$bin" pipeline "$src/examples/data/fandisk.off" -o x --format stl > /dev/null 2> err.txt; expect_exit "bad format" 2 $?
 [ ! -e x ] && ok || bad "a folder was made on bad usage"
 
-# ---- the work cannot be done: exit 1 with the reason, nothing written -------------------------
+# ---- an input no stage that runs can make FEM-ready: exit 2 with the reason, nothing written ----
 python3 "$here/cli_meshes.py" two_boxes holed split_cube
-"$bin" pipeline split_cube.off -o out_split > /dev/null 2> err.txt; expect_exit "split vertices" 1 $?
+"$bin" pipeline split_cube.off -o out_split > /dev/null 2> err.txt; expect_exit "split vertices" 2 $?
 one_line "split vertices" "split_cube.off: not FEM-ready: 28 vertices lie exactly on another vertex"
 [ -z "$(ls -A out_split 2>/dev/null)" ] && ok || bad "files written for a surface with split vertices"
 # With --repair the same file is welded first (its own row) and goes through to tets.
@@ -230,7 +230,7 @@ python3 -c "
 import json; j = json.load(open('split.json')); s = j['stages']
 assert [x['name'] for x in s[:2]] == ['repair', 'check'] and s[0]['details']['welded_vertices'] == 28, s[:2]
 assert j['fem_ready'] is True, j['fem_ready']" && ok || bad "--repair: the repair row or the verdict"
-"$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 1 $?
+"$bin" pipeline two_boxes.off -o out_boxes > /dev/null 2> err.txt; expect_exit "self-intersecting input" 2 $?
 one_line "self-intersecting input" "two_boxes.off: not FEM-ready: the surface intersects itself"
 [ -z "$(ls -A out_boxes 2>/dev/null)" ] && ok || bad "files written for a self-intersecting input"
 grep -q "simplification may" err.txt && grep -q -- "--repair cuts" err.txt && ok ||
@@ -305,14 +305,14 @@ grep -q "intersect" err.txt && [ -s out_boxes_simplified/report.json ] && ok \
 "$bin" simplify two_boxes.off -o boxes_simplified.off --ratio 0.5 > /dev/null 2> err.txt
 expect_exit "simplify a self-intersecting input" 0 $?
 grep -q "boxes_simplified.off still intersects itself" err.txt && ok || bad "simplify: the crossings left, on stderr"
-"$bin" pipeline holed.off -o out_holed > /dev/null 2> err.txt; expect_exit "open surface with a hole" 1 $?
+"$bin" pipeline holed.off -o out_holed > /dev/null 2> err.txt; expect_exit "open surface with a hole" 2 $?
 one_line "open surface with a hole" "holed.off: not FEM-ready: the surface is open"
 echo '{"tetrahedralize": {"enabled": false}}' > surface_only.json
 "$bin" pipeline holed.off -o out_holed --config surface_only.json --quiet 2> err.txt
 expect_exit "surface only" 0 $?
 [ -s out_holed/surface.ply ] && [ ! -e out_holed/tets.msh ] && ok || bad "surface only: $(ls out_holed)"
 
-# ---- stopping: Ctrl-C (exit 130) and --timeout (exit 1), nothing written, TetGen's child gone --
+# ---- stopping: Ctrl-C (exit 130) and --time-limit before the tets exist (exit 124), nothing written, TetGen's child gone --
 no_leftovers() {  # NAME DIR: the folder is empty and no temporary file is left anywhere here
   [ -z "$(ls -A "$2" 2>/dev/null)" ] && [ -z "$(find . -name '.*.tmp-*' -o -name '.meshprep-staging-*')" ] && ok ||
     bad "$1: files left: $(ls -A "$2") $(find . -name '.*.tmp-*' -o -name '.meshprep-staging-*')"
@@ -325,14 +325,15 @@ wait $pid
 expect_exit "Ctrl-C" 130 $?
 one_line "Ctrl-C" "jacksboro_10k.xyz: interrupted; nothing written"
 no_leftovers "Ctrl-C" stopped
-"$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o timed_out --timeout 1 --quiet 2> err.txt
-expect_exit "pipeline --timeout" 1 $?
-one_line "pipeline --timeout" "jacksboro_10k.xyz: timed out after 1 s; nothing written"
-no_leftovers "pipeline --timeout" timed_out
+"$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o timed_out --time-limit 1 --quiet 2> err.txt
+expect_exit "pipeline --time-limit" 124 $?
+one_line "pipeline --time-limit" "jacksboro_10k.xyz: the time limit (--time-limit 1 s) came before anything usable was made; nothing written"
+no_leftovers "pipeline --time-limit" timed_out
 # TetGen on 10^6 tets takes far longer than a second: the timeout kills it.
+# (--timeout, the flag's first name, stays an alias of --time-limit.)
 "$bin" tetrahedralize "$src/examples/data/fandisk.off" -o slow.msh --max-volume-relative 1e-6 --timeout 1 2> err.txt
-expect_exit "tetrahedralize --timeout" 1 $?
-one_line "tetrahedralize --timeout" "fandisk.off: timed out after 1 s; nothing written"
+expect_exit "tetrahedralize --timeout" 124 $?
+one_line "tetrahedralize --timeout" "fandisk.off: the time limit (--time-limit 1 s) came before anything usable was made; nothing written"
 [ ! -e slow.msh ] && ok || bad "tetrahedralize --timeout wrote slow.msh"
 # (A killed child may take a moment to vanish on a loaded machine; a leaked one, working on 10^6
 # tets, is still there seconds later.)
@@ -342,6 +343,29 @@ for _ in 1 2 3 4 5 6 7 8 9 10; do
 done
 leaked=$(pgrep -af "tetrahedralize $src/examples/data/fandisk.off")
 [ -z "$leaked" ] && ok || bad "TetGen's child outlived the timeout: $leaked"
+
+# ---- the improvement is anytime: at the time limit it ends with its best tets, written ---------
+# TetGen's own tets of the fandisk have tets below the goal; a limit that has passed before the
+# improvement starts leaves those tets as they are, written, and the report says why.
+"$bin" tetrahedralize "$src/examples/data/fandisk.off" -o raw.msh --no-improve > /dev/null 2> err.txt
+[ -s raw.msh ] && ok || bad "tetrahedralize --no-improve wrote no raw.msh"
+"$bin" improve raw.msh -o best.msh --time-limit 0.001 --json best.json > /dev/null 2> err.txt
+rc=$?
+{ [ "$rc" = 0 ] || [ "$rc" = 1 ]; } && [ -s best.msh ] && python3 -c "
+import json; j = json.load(open('best.json')); i = j['improvement']
+assert j['stopped'] == 'time limit' and i['stopped_by'] == 'time limit' and i['below_goal_before'] > 0, (j['stopped'], i)
+assert j['fem_ready'] == ($rc == 0), j['fem_ready']" && ok || bad "improve --time-limit: exit $rc, the best tets or the report"
+# Without a limit the same run reaches its end by itself, and says so.
+"$bin" improve raw.msh -o improved.msh --json improved.json > /dev/null 2> err.txt
+python3 -c "
+import json; j = json.load(open('improved.json'))
+assert j['stopped'] is None and j['improvement']['stopped_by'] != 'time limit', j['improvement']['stopped_by']" &&
+  ok || bad "improve without a limit: stopped"
+# An output that cannot be written is bad usage found before any work: exit 2, one line, on the
+# slowest input here too.
+"$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o /proc/version/out 2> err.txt
+expect_exit "pipeline into an unwritable folder" 2 $?
+one_line "pipeline into an unwritable folder" "cannot"
 
 echo "cli_pipeline: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

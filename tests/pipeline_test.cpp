@@ -206,14 +206,15 @@ TEST_F(Pipeline, TetGenSplitsABlocksTrianglesUnlessToldToKeepThem) {
 TEST_F(Pipeline, WhatNoStageMendsIsRefusedBeforeAnyWork) {
   // Two interpenetrating cubes: self-intersections.
   const TriangleSoup crossing = test::merged(test::cube(), test::translated(test::cube(), Vec3(0.5, 0.5, 0.5)));
-  EXPECT_THROW(run_pipeline(mesh_file(crossing, "crossing.off"), small_config()), PipelineFailed);
+  // Bad input (exit 2), found before any work.
+  EXPECT_THROW(run_pipeline(mesh_file(crossing, "crossing.off"), small_config()), InvalidInput);
   // An open surface with two boundary loops (a grid with a hole) cannot be closed into a block.
   TriangleSoup holed = test::grid(5);
   holed.triangles.erase(holed.triangles.begin() + 24, holed.triangles.begin() + 26);  // the middle cell
   try {
     run_pipeline(mesh_file(holed, "holed.off"), small_config());
     ADD_FAILURE() << "an open surface with a hole was accepted";
-  } catch (const PipelineFailed& e) {
+  } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("2 boundary loops"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("--repair"), std::string::npos) << e.what();
   }

@@ -4,6 +4,19 @@
 
 namespace meshprep {
 
+CommandHooks CommandHooks::until_deadline() const {
+  if (!deadline.is_set()) return *this;
+  CommandHooks bounded = *this;
+  bounded.progress = [progress = progress, deadline = deadline](double fraction) {
+    if (deadline.passed()) throw TimeLimitReached("time limit reached");
+    if (progress) progress(fraction);
+  };
+  bounded.cancelled = [cancelled = cancelled, deadline = deadline] {
+    return deadline.passed() || (cancelled && cancelled());
+  };
+  return bounded;
+}
+
 void add_taken_back_notes(const std::vector<TakenBack>& taken_back, CommandMessages& messages) {
   for (const TakenBack& t : taken_back) messages.push_back("note: " + describe(t));
 }

@@ -28,7 +28,7 @@ SimplifyOutcome simplify_command(LoadedMesh input, const SimplifyCommand& comman
                                 const CommandHooks& hooks) {
   require_all_faces(input, "simplification");
   SimplifyParams params = command.params;
-  params.progress = hooks.progress;
+  params.progress = hooks.until_deadline().progress;
   SimplifyAndEnhanceResult enhanced;  // enhance: the Fig. 6 combination's figures
   SimplifyOutcome outcome;
   const SimplifyResult& result = outcome.result = run_stage_on(names.input, [&] {

@@ -16,7 +16,7 @@ SmoothOutcome smooth_command(LoadedMesh input, const SmoothCommand& command, con
                               const CommandHooks& hooks) {
   require_all_faces(input, "smoothing");
   SmoothParams params = command.params;
-  params.progress = hooks.progress;
+  params.progress = hooks.until_deadline().progress;
   SmoothOutcome outcome;
   const SmoothResult& result = outcome.result = run_stage_on(names.input, [&] { return smooth(input.mesh, params); });
   add_taken_back_notes(result.taken_back, outcome.messages);
@@ -47,7 +47,7 @@ EnhanceOutcome enhance_command(LoadedMesh input, const TriangleSoup* reference, 
   require_all_faces(input, "enhancement");
   if (reference && reference->triangles.empty()) throw InvalidInput(reference_name + ": the reference has no faces");
   EnhanceParams params = command.params;
-  params.progress = hooks.progress;
+  params.progress = hooks.until_deadline().progress;
   EnhanceOutcome outcome;
   const EnhanceResult& result = outcome.result =
       run_stage_on(names.input, [&] { return enhance(input.mesh, reference, params); });
@@ -110,7 +110,7 @@ RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, con
 
 ReconstructOutcome reconstruct_command(const std::vector<Vec3>& points, const ReconstructCommand& command,
                                        const CommandNames& names, const CommandHooks& hooks) {
-  const AdaptiveReconstructParams adaptive{command.params, hooks.progress};
+  const AdaptiveReconstructParams adaptive{command.params, hooks.until_deadline().progress};
   ReconstructOutcome outcome;
   ReconstructResult& result = outcome.result = run_stage_on(names.input, [&] {
     return command.adaptive ? reconstruct_adaptive(points, adaptive) : reconstruct_surface(points, command.params);

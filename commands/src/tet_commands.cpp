@@ -25,9 +25,13 @@ void finish_tets(TetOutcome& outcome, const TriangleSoup* reference, const TetFi
                    format_number(goals.goal_min_dihedral_deg, 4) + " and " + format_number(goals.goal_max_dihedral_deg, 4) +
                    " deg) ...");
     ImproveParams params = goals;
+    params.progress = hooks.progress;
     params.cancelled = hooks.cancelled;
+    params.deadline = hooks.deadline;
     outcome.improvement = improve_tets(tets, params);
     json["improvement"] = to_json(*outcome.improvement);
+    // The figures below are then the best tets the time allowed.
+    json["stopped"] = outcome.improvement->stopped_by == "time limit" ? nlohmann::ordered_json("time limit") : nullptr;
     add_taken_back_notes(outcome.improvement->taken_back, outcome.messages);
   }
   if (before_second_order) before_second_order();
@@ -83,7 +87,7 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
     json["extrude_base_depth"] = *depth;
   }
   PreparedPlc prepared = prepare_plc(soup, depth);
-  if (depth && !prepared.plc) throw SolverError(names.input + ": cannot extrude: " + prepared.extrusion_problem);
+  if (depth && !prepared.plc) throw InvalidInput(names.input + ": cannot extrude: " + prepared.extrusion_problem);
   if (!depth) {
     outcome.readiness = *prepared.readiness;
     json["readiness"] = to_json(*prepared.readiness);
@@ -102,8 +106,11 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
 
   hooks.announce("tetrahedralizing " + std::to_string(plc.facets.size()) + " facets with TetGen ...");
   const auto start = std::chrono::steady_clock::now();
+  // Until the tets exist there is nothing usable: TetGen and the figures of its tets stop at the
+  // deadline; from there on the improvement takes the time left and the rest is finished.
+  const CommandHooks bounded = hooks.until_deadline();
   TetParams params = command.params;
-  params.cancelled = hooks.cancelled;
+  params.cancelled = bounded.cancelled;
   try {
     outcome.tets = tetrahedralize_plc(plc, params);
   } catch (const TetgenError& e) {
@@ -112,7 +119,7 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
     outcome.failure = e.what();
     return outcome;
   }
-  if (hooks.cancelled && hooks.cancelled()) throw Cancelled("cancelled");  // TetGen had just finished
+  if (bounded.cancelled && bounded.cancelled()) throw Cancelled("cancelled");  // TetGen had just finished
   json["tetgen_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (command.finishing.improve) {
     outcome.quality_before = analyze_tet_quality(outcome.tets, kDefaultWorstTets, hooks.cancelled);

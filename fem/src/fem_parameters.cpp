@@ -1,5 +1,7 @@
 #include "meshprep/fem/fem_parameters.h"
 
+#include "meshprep/fem/improve_tets.h"
+
 #include <limits>
 
 namespace meshprep {
@@ -25,7 +27,10 @@ const ImproveParameters& improve_parameters() {
       {"insertion", "--insertion", "insert inner vertices where flips and smoothing are stuck", {}},
       {"max_passes", "--max-passes", "passes over the tets below the goal, at most", {1, 1000}},
       {"time_limit_seconds", "--improve-time-limit",
-       "stop improving after this many seconds (the tets so far are kept); 0 = no limit", {0, inf, false, true}}};
+       "stop improving after this many seconds (the best tets so far are kept); -1 = automatic, " +
+           parameter_text(kAutomaticTimeLimitFloorSeconds) + " s + " +
+           parameter_text(kAutomaticTimeLimitPerTetSeconds * 1e6) + " us per tet; 0 = no limit",
+       {-1, inf, false, true}}};
   return parameters;
 }
 

@@ -101,8 +101,12 @@ class Run {
     }
   }
 
+  // The user's stop ends the run anywhere; the deadline only until the tets exist (from there on the
+  // improvement takes the time left, and the rest is finished).
   void stop_if_cancelled() const {
     if (observer_.cancelled && observer_.cancelled()) throw Cancelled(result_.input + ": stopped");
+    if (!result_.tets && observer_.deadline.passed())
+      throw TimeLimitReached(result_.input + ": time limit reached before the tets were made");
   }
 
   // A stage begins: the front end is told, and its record is opened on the current mesh.
@@ -297,17 +301,18 @@ class Run {
                   std::to_string(report.self_intersections) + " self-intersecting face pairs";
     finish(std::move(record));
     if (!config_.tetrahedralize.enabled) return;
-    // What no later stage can mend is refused before any work is done. Split vertices first: they
-    // open every seam and make touching faces count as crossings, so the figures would mislead.
+    // What no later stage can mend is refused before any work is done, as bad input (exit 2). Split
+    // vertices first: they open every seam and make touching faces count as crossings, so the
+    // figures would mislead.
     if (report.self_intersections > 0 || !report.closed)
       if (const std::size_t merged = find_coincident_vertices(result_.input_surface).merged)
-        throw PipelineFailed(result_.input + ": not FEM-ready: " + std::to_string(merged) +
+        throw InvalidInput(result_.input + ": not FEM-ready: " + std::to_string(merged) +
                              " vertices lie exactly on another vertex: the file splits its vertices (as VTK's normals "
                              "filter writes them), so its faces are not connected; weld them first (--repair)");
     // Simplification may remove crossings (its collapses merge the crossing faces); if it runs,
     // the final surface's readiness check judges what is left.
     if (report.self_intersections > 0 && !simplifies())
-      throw PipelineFailed(result_.input + ": not FEM-ready: the surface intersects itself at " +
+      throw InvalidInput(result_.input + ": not FEM-ready: the surface intersects itself at " +
                            std::to_string(report.self_intersections) +
                            " face pairs (meshprep quality lists them), which the stages that run do not remove "
                            "(simplification may: give --ratio or --target-faces); repair the surface first (--repair cuts "
@@ -317,7 +322,7 @@ class Run {
       try {
         extrude_to_block(result_.input_surface, 1);
       } catch (const InvalidInput& e) {
-        throw PipelineFailed(result_.input + ": not FEM-ready: the surface is open (" +
+        throw InvalidInput(result_.input + ": not FEM-ready: the surface is open (" +
                              std::to_string(report.border_edges) + " border edges) and cannot be closed into a block (" +
                              e.what() + "); fill its holes first (--repair; repair.max_hole sets the longest rim filled), "
                              "or switch tetrahedralize off to process the surface only");
@@ -446,12 +451,15 @@ class Run {
     double volume_change = 0;
     if (std::optional<SurfacePlc> plc = prepare_tet_input(record)) {
       params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
-      params.cancelled = observer_.cancelled;
+      params.cancelled = [this] { return observer_.deadline.passed() || (observer_.cancelled && observer_.cancelled()); };
       try {
         result_.tets = tetrahedralize_plc(*plc, params);
         volume_change = volume_change_relative(*plc, *result_.tets);
       } catch (const TetgenError& e) {
         result_.fem.problems.push_back(std::string("TetGen: ") + e.what());
+      } catch (const Cancelled&) {
+        stop_if_cancelled();  // the user's stop or the deadline, said as such
+        throw;
       }
     }
     record.seconds = seconds_since(start);
@@ -496,6 +504,7 @@ class Run {
     ImproveParams params = config_.improve.params;
     params.progress = progress();
     params.cancelled = observer_.cancelled;
+    params.deadline = observer_.deadline;
     const ImproveResult r = improve_tets(*result_.tets, params);
     record.seconds = r.seconds;
     record.details = to_json(r);

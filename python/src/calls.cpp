@@ -1,6 +1,7 @@
 #include "calls.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/exit_codes.h"
 
 #include <algorithm>
 
@@ -45,27 +46,29 @@ void register_exceptions(py::module_& module) {
                                    "The work ran out of its time limit: nothing was written.");
   t.cancelled = make_exception(module, "Cancelled", py::make_tuple(t.error), 130,
                                "A CancelToken stopped the work: nothing was written.");
+  // One mapping for the command line and the module: the exception's exit code picks its class.
   py::register_exception_translator([](std::exception_ptr failure) {
     if (!failure) return;
     const ExceptionTypes& raised = exception_types();
     try {
       std::rethrow_exception(failure);
-    } catch (const Cancelled& e) {
-      raise(raised.cancelled, e.what());
-    } catch (const InvalidInput& e) {
-      raise(raised.input_error, e.what());
-    } catch (const WriteError& e) {
-      raise(raised.work_error, e.what());
-    } catch (const IoError& e) {
-      raise(raised.input_error, e.what());
     } catch (const Error& e) {
-      raise(raised.work_error, e.what());
+      switch (exit_code_of(e)) {
+        case ExitCode::bad_input: return raise(raised.input_error, e.what());
+        case ExitCode::time_limit: return raise(raised.timeout_error, e.what());
+        case ExitCode::interrupted: return raise(raised.cancelled, e.what());
+        default: return raise(raised.work_error, e.what());
+      }
     }
   });
 }
 
-CallControl::CallControl(py::object progress, CancelToken* cancel, std::size_t threads)
-    : progress_(std::move(progress)), cancel_(cancel), threads_(threads) {}
+CallControl::CallControl(py::object progress, CancelToken* cancel, const CallOptions& options)
+    : progress_(std::move(progress)),
+      cancel_(cancel),
+      threads_(options.threads),
+      time_limit_seconds_(options.time_limit_seconds),
+      deadline_(Deadline::in_seconds(options.time_limit_seconds)) {}
 
 CommandHooks CallControl::hooks(const std::string& stage) {
   set_stage(stage);
@@ -74,6 +77,7 @@ CommandHooks CallControl::hooks(const std::string& stage) {
     if (poll(fraction)) throw Cancelled("cancelled");
   };
   hooks.cancelled = [this] { return poll(-1); };
+  hooks.deadline = deadline_;
   return hooks;
 }
 

@@ -6,6 +6,8 @@
 // Cancelled), each with the CLI's exit code as `exit_code`.
 
 #include "meshprep/commands/outcome.h"
+#include "meshprep/core/errors.h"
+#include "meshprep/core/parameter.h"
 
 #include <pybind11/pybind11.h>
 #include <tbb/task_arena.h>
@@ -36,12 +38,21 @@ const ExceptionTypes& exception_types();
 /// Makes the exception classes in `module` and the translator from meshprep's C++ errors.
 void register_exceptions(py::module_& module);
 
+/// The keywords of every call beside the configuration's: `threads` > 0 bounds the threads of the
+/// call's parallel parts (a TBB arena of its own, so concurrent calls keep their own bounds);
+/// `time_limit_seconds` > 0 is the call's deadline (0: none).
+struct CallOptions {
+  std::size_t threads = 0;
+  double time_limit_seconds = 0;
+};
+
 /// One call's link to Python: its hooks poll Ctrl-C and the callback on the caller's thread.
 class CallControl {
  public:
-  /// With the GIL held. `progress` may be None, `cancel` null; `threads` > 0 bounds the threads
-  /// of this call's parallel parts (a TBB arena of its own, so concurrent calls keep their own bounds).
-  CallControl(py::object progress, CancelToken* cancel, std::size_t threads);
+  /// With the GIL held. `progress` may be None, `cancel` null; the deadline starts now.
+  CallControl(py::object progress, CancelToken* cancel, const CallOptions& options);
+
+  const Deadline& deadline() const { return deadline_; }
 
   /// Hooks for the command, usable without the GIL; `stage` names the work to the callback.
   CommandHooks hooks(const std::string& stage);
@@ -63,6 +74,12 @@ class CallControl {
         } else {
           result.emplace(work());
         }
+      } catch (const Cancelled& e) {
+        // Stopped at the deadline rather than by the user: TimeoutError.
+        failure = !stop_ && !(cancel_ && cancel_->cancelled) && deadline_.passed()
+                      ? std::make_exception_ptr(TimeLimitReached(std::string(e.what()) + ": the time limit (time_limit=" +
+                                                                 parameter_text(time_limit_seconds_) + " s) came first"))
+                      : std::current_exception();
       } catch (...) {
         failure = std::current_exception();
       }
@@ -82,6 +99,8 @@ class CallControl {
   py::object progress_;
   CancelToken* cancel_;
   std::size_t threads_;
+  double time_limit_seconds_;
+  Deadline deadline_;
   std::thread::id caller_ = std::this_thread::get_id();
   std::atomic<bool> stop_{false};
   std::mutex mutex_;  // guards stage_ and pending_

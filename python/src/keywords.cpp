@@ -74,6 +74,7 @@ void apply_keywords(const Keywords& spec, const py::dict& kwargs, PipelineConfig
         if (!contains(spec.refused, k)) valid.push_back(k);
       for (const std::string& s : spec.sections) valid.push_back(s + "={...}");
       valid.push_back("threads");  // the call's own (stages.cpp), as every command's --threads
+      valid.push_back("time_limit");  // and --time-limit
       throw InvalidInput(origin + ": unknown keyword '" + name + "'; it takes " + joined(valid));
     }
   }

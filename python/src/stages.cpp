@@ -60,14 +60,26 @@ CancelToken* token_of(const py::handle& cancel) {
   return &cancel.cast<CancelToken&>();
 }
 
-// The keyword every call takes beside the configuration keys: threads for its parallel parts
-// (0 = all cores), as the command line's --threads; taken out of `kw`.
-std::size_t take_threads(py::dict& kw) {
-  if (!kw.contains("threads")) return 0;
-  const py::object value = kw.attr("pop")("threads");
-  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value) || value.cast<long long>() < 0)
-    throw InvalidInput("threads: expected an integer >= 0 (0 = all cores), not " + std::string(py::repr(value)));
-  return value.cast<std::size_t>();
+// The keywords every call takes beside the configuration keys, as the command line's flags:
+// threads for its parallel parts (0 = all cores, --threads) and time_limit, the whole call's
+// deadline in seconds (0 = none, --time-limit); taken out of `kw`.
+CallOptions take_call_options(py::dict& kw) {
+  CallOptions options;
+  if (kw.contains("threads")) {
+    const py::object value = kw.attr("pop")("threads");
+    if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value) || value.cast<long long>() < 0)
+      throw InvalidInput("threads: expected an integer >= 0 (0 = all cores), not " + std::string(py::repr(value)));
+    options.threads = value.cast<std::size_t>();
+  }
+  if (kw.contains("time_limit")) {
+    const py::object value = kw.attr("pop")("time_limit");
+    const bool number = (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) && !py::isinstance<py::bool_>(value);
+    const double seconds = number ? value.cast<double>() : -1;
+    if (!(seconds >= 0 && std::isfinite(seconds)))
+      throw InvalidInput("time_limit: expected a number of seconds >= 0 (0 = none), not " + std::string(py::repr(value)));
+    options.time_limit_seconds = seconds;
+  }
+  return options;
 }
 
 // The names messages give a call's input and output.
@@ -119,7 +131,7 @@ PipelineConfig configured(const Keywords& spec, const py::dict& keywords) {
 // ---- the calls ----
 
 py::dict call_simplify(const py::object& surface, const py::object& progress, const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kSimplify, kw);
   SimplifyCommand command;
   command.params = config.simplify.params;
@@ -128,7 +140,7 @@ py::dict call_simplify(const py::object& surface, const py::object& progress, co
   command.params.keep_ratio = config.simplify.ratio.value_or(1.0);
   command.quality = config.quality.params;
   LoadedMesh input = input_of(surface, "simplify");
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   const CommandHooks hooks = control.hooks("simplify");
   SimplifyOutcome outcome = control.run([&] {
     build_mesh(input);
@@ -138,11 +150,11 @@ py::dict call_simplify(const py::object& surface, const py::object& progress, co
 }
 
 py::dict call_smooth(const py::object& surface, const py::object& progress, const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kSmooth, kw);
   const SmoothCommand command{config.smooth.params, config.quality.params};
   LoadedMesh input = input_of(surface, "smooth");
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   const CommandHooks hooks = control.hooks("smooth");
   SmoothOutcome outcome = control.run([&] {
     build_mesh(input);
@@ -153,12 +165,12 @@ py::dict call_smooth(const py::object& surface, const py::object& progress, cons
 
 py::dict call_enhance(const py::object& surface, const py::object& reference, const py::object& progress,
                       const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kEnhance, kw);
   const EnhanceCommand command{config.enhance.params, config.quality.params};
   LoadedMesh input = input_of(surface, "enhance");
   const TriangleSoup* against = optional_surface(reference, "reference");
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   const CommandHooks hooks = control.hooks("enhance");
   EnhanceOutcome outcome = control.run([&] {
     build_mesh(input);
@@ -168,21 +180,21 @@ py::dict call_enhance(const py::object& surface, const py::object& reference, co
 }
 
 py::dict call_repair(const py::object& surface, const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kRepair, kw);
   TriangleSoup input = surface_arg(surface, "surface");
-  CallControl control(py::none(), token_of(cancel), threads);
+  CallControl control(py::none(), token_of(cancel), options);
   RepairOutcome outcome =
       control.run([&] { return repair_command(std::move(input), config.repair.params, names_of("repair")); });
   return result(surface_object(std::move(outcome.surface)), outcome.report, outcome.messages, std::nullopt);
 }
 
 py::dict call_reconstruct(const py::object& points, const py::object& progress, const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kReconstruct, kw);
   const ReconstructCommand command{config.reconstruct.params, config.reconstruct.adaptive};
   const std::vector<Vec3> samples = points_from_array(points, "points");
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   const CommandHooks hooks = control.hooks("reconstruct");
   ReconstructOutcome outcome =
       control.run([&] { return reconstruct_command(samples, command, names_of("reconstruct"), hooks); });
@@ -191,15 +203,15 @@ py::dict call_reconstruct(const py::object& points, const py::object& progress, 
 
 py::dict call_check(const py::object& surface) {
   const TriangleSoup& soup = surface_arg(surface, "surface");
-  CallControl control(py::none(), nullptr, 0);
+  CallControl control(py::none(), nullptr, CallOptions{});
   const Readiness readiness = control.run([&] { return check_fem_readiness(soup); });
   return result(py::none(), to_json(readiness), {}, readiness.ready());
 }
 
 py::dict call_quality(const py::object& mesh, const py::object& reference, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kQuality, kw);
-  CallControl control(py::none(), nullptr, threads);
+  CallControl control(py::none(), nullptr, options);
   if (py::isinstance<Tets>(mesh)) {
     if (!reference.is_none()) throw InvalidInput("meshprep.quality(): reference is for surfaces, not tet meshes");
     const TetMesh& tets = *mesh.cast<const Tets&>().mesh;
@@ -224,14 +236,18 @@ TetFinishing finishing_of(const PipelineConfig& config) {
 }
 
 py::dict tet_result(TetOutcome outcome) {
-  if (!outcome.failure.empty()) throw SolverError(outcome.failure);
+  // As the command line: a surface that is not FEM-ready is bad input (2), TetGen failing is failed work (3).
+  if (!outcome.failure.empty()) {
+    if (outcome.readiness && !outcome.readiness->ready()) throw InvalidInput(outcome.failure);
+    throw SolverError(outcome.failure);
+  }
   const bool ready = outcome.fem_ready();
   return result(tets_object(std::move(outcome.tets)), outcome.report, outcome.messages, ready);
 }
 
 py::dict call_tetrahedralize(const py::object& surface, const py::object& progress, const py::object& cancel,
                              py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   PipelineConfig config = command_defaults();
   // The surface is extruded only when asked (the pipeline's default depth is for its terrains).
   const bool extrude = kw.contains("extrude_base") || kw.contains("extrude_base_relative");
@@ -246,14 +262,14 @@ py::dict call_tetrahedralize(const py::object& surface, const py::object& progre
     command.extrude_relative = kw.contains("extrude_base_relative") ? config.tetrahedralize.extrude_base_relative : 0;
   }
   const TriangleSoup& soup = surface_arg(surface, "surface");
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   const CommandHooks hooks = control.hooks("tetrahedralize");
   return tet_result(control.run([&] { return tetrahedralize_command(soup, command, names_of("tetrahedralize"), hooks); }));
 }
 
 py::dict call_improve(const py::object& tets, const py::object& reference, const py::object& progress,
                       const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   PipelineConfig config = command_defaults();
   if (kw.contains("order")) {  // the tetrahedralize section's key, as the command line's --order
     apply_config({{"tetrahedralize", {{"order", json_value(kw["order"], "order")}}}}, "meshprep.improve()", config);
@@ -265,7 +281,7 @@ py::dict call_improve(const py::object& tets, const py::object& reference, const
   TetMesh mesh = *tets.cast<const Tets&>().mesh;
   const TriangleSoup* against = optional_surface(reference, "reference");
   const TetFinishing finishing = finishing_of(config);
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   const CommandHooks hooks = control.hooks("improve");
   return tet_result(
       control.run([&] { return improve_command(std::move(mesh), against, finishing, names_of("improve"), hooks); }));
@@ -273,7 +289,7 @@ py::dict call_improve(const py::object& tets, const py::object& reference, const
 
 py::dict call_pipeline(const py::object& input, const py::object& outdir, const py::object& config_arg,
                        const py::object& progress, const py::object& cancel, py::dict kw) {
-  const std::size_t threads = take_threads(kw);
+  const CallOptions options = take_call_options(kw);
   PipelineConfig config;
   if (py::isinstance<py::dict>(config_arg)) {
     apply_config(json_value(config_arg, "config"), "meshprep.pipeline() config", config);
@@ -295,13 +311,14 @@ py::dict call_pipeline(const py::object& input, const py::object& outdir, const 
   }
   const std::string folder = outdir.is_none() ? std::string() : path_of(outdir, "outdir");
   if (!folder.empty()) check_output_dir(folder);
-  CallControl control(progress, token_of(cancel), threads);
+  CallControl control(progress, token_of(cancel), options);
   PipelineObserver observer;
   observer.stage_started = [&control](const std::string& stage) { control.set_stage(stage); };
   observer.progress = [&control](double fraction) {
     if (control.poll(fraction)) throw Cancelled("cancelled");
   };
   observer.cancelled = [&control] { return control.poll(-1); };
+  observer.deadline = control.deadline();
   PipelineResult run = control.run([&] {
     PipelineResult result = given.name.empty() ? run_pipeline(path, config, observer) : run_pipeline(given, config, observer);
     if (!folder.empty()) {
@@ -323,7 +340,9 @@ py::dict call_pipeline(const py::object& input, const py::object& outdir, const 
 std::string doc(const char* what, const Keywords& spec) {
   return std::string(what) + "\n\nKeywords (the configuration file's keys, docs/pipeline.md):\n" +
          keyword_doc(spec, command_defaults()) +
-         "    threads (integer >= 0, default 0): threads for this call's parallel parts; 0 = all cores\n";
+         "    threads (integer >= 0, default 0): threads for this call's parallel parts; 0 = all cores\n"
+         "    time_limit (seconds >= 0, default 0): the whole call's limit; the tet improvement ends there with its best "
+         "tets, any other step raises TimeoutError; 0 = none\n";
 }
 
 }  // namespace

@@ -165,10 +165,29 @@ def test_not_ready_error_carries_the_result():
     assert caught.value.report["fem_ready"] is False
 
 
-def test_open_surface_is_refused_as_not_ready_work():
+def test_open_surface_is_refused_as_bad_input():
     points, faces = cube_surface()
-    with pytest.raises(meshprep.WorkError, match="not FEM-ready"):
+    with pytest.raises(meshprep.InputError, match="not FEM-ready"):
         meshprep.tetrahedralize(meshprep.Surface(points, faces[:-1]))
+
+
+def test_time_limit_ends_the_improvement_with_its_best_tets():
+    # A limit that has passed before the improvement starts: TetGen's tets as they are, and the
+    # report says why; the tets are usable (not a TimeoutError).
+    tets = slow_tets()
+    result = meshprep.improve(tets, time_limit=1e-9, verdict={"min_dihedral_deg": 0, "max_dihedral_deg": 180})
+    assert result.report["stopped"] == "time limit"
+    assert result.report["improvement"]["stopped_by"] == "time limit"
+    assert result.tets.tets.shape == tets.tets.shape
+
+
+def test_time_limit_before_anything_usable_raises_timeout_error():
+    surface = meshprep.read(DATA / "handle.off")
+    with pytest.raises(meshprep.TimeoutError, match="time_limit") as caught:
+        meshprep.simplify(surface, ratio=0.5, time_limit=1e-9)
+    assert caught.value.exit_code == 124
+    with pytest.raises(meshprep.InputError, match="time_limit"):
+        meshprep.simplify(surface, ratio=0.5, time_limit=-1)
 
 
 def test_simplify_gives_the_command_lines_figures_and_file(tmp_path):

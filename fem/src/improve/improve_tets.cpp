@@ -85,12 +85,17 @@ DihedralRange dihedral_range(const TetMesh& mesh, const std::function<bool()>& c
 
 class Schedule {
  public:
-  Schedule(TetComplex& mesh, const ImproveParams& params, ImproveResult& result)
+  // The run ends by `end` (none: no time limit); `began` is when the improvement began, for the
+  // progress the clock gives.
+  Schedule(TetComplex& mesh, const ImproveParams& params, ImproveResult& result, Clock::time_point began,
+           std::optional<Clock::time_point> end)
       : mesh_(mesh),
         params_(params),
         result_(result),
         goal_(std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree)),
-        work_goal_(goal_) {}
+        work_goal_(goal_),
+        began_(began),
+        end_(end) {}
 
   std::size_t below_goal() const {
     std::size_t n = 0;
@@ -106,13 +111,12 @@ class Schedule {
   }
 
   void run() {
-    const Clock::time_point start = Clock::now();
     result_.below_goal_before = below_goal();
     if (result_.below_goal_before == 0) {
       result_.stopped_by = "nothing to do";
       return;
     }
-    result_.stopped_by = run_passes(start);
+    result_.stopped_by = run_passes();
     for (int round = 1; round <= kEscalations && result_.stopped_by == "no gain"; ++round) {
       // Stuck: work on the stuck tets' surroundings towards a higher goal, which may free room the
       // hill climbing at the goal cannot find, then go back to the goal. The detour may also end
@@ -122,9 +126,9 @@ class Schedule {
       const std::size_t below = below_goal();
       const double worst_before = worst();
       escalate(kEscalationDeg * round);
-      run_passes(start, kEscalatedPasses);
+      run_passes(kEscalatedPasses);
       deescalate();
-      const std::string stopped_by = run_passes(start);
+      const std::string stopped_by = run_passes();
       const double worst_after = worst();
       if (worst_after < worst_before || (worst_after == worst_before && below_goal() >= below)) {
         const std::size_t passes = result_.passes;
@@ -139,6 +143,7 @@ class Schedule {
              {{"tets_below_goal", static_cast<double>(below_after)}, {"worst_quality", worst_after}},
              {{"tets_below_goal", static_cast<double>(below)}, {"worst_quality", worst_before}}});
         failed_.clear();
+        if (stopped_by == "time limit") result_.stopped_by = stopped_by;  // the time ended the detour
         return;
       }
       result_.stopped_by = stopped_by;
@@ -148,13 +153,13 @@ class Schedule {
 
  private:
   // Passes until the goal is reached, a pass gains nothing, or the limits: the reason.
-  std::string run_passes(Clock::time_point start, std::size_t at_most = ~std::size_t(0)) {
+  std::string run_passes(std::size_t at_most = ~std::size_t(0)) {
     std::size_t below = below_goal();
     double worst_now = worst();
     for (std::size_t pass = 0; pass < at_most && result_.passes < params_.max_passes; ++pass) {
-      if (!may_go_on(start)) return "time limit";
+      if (!may_go_on()) return "time limit";
       ++result_.passes;
-      if (!run_pass(start)) return "time limit";
+      if (!run_pass()) return "time limit";
       const std::size_t below_after = below_goal();
       const double worst_after = worst();
       if (below_after == 0) return "goal reached";
@@ -213,14 +218,23 @@ class Schedule {
   }
 
   // Asks the cancellation callback and the clock; false when the time is up.
-  bool may_go_on(Clock::time_point start) const {
+  bool may_go_on() const {
     if (params_.cancelled && params_.cancelled()) throw Cancelled("tet improvement stopped");
-    return !(params_.time_limit_seconds > 0 &&
-             std::chrono::duration<double>(Clock::now() - start).count() > params_.time_limit_seconds);
+    return !(end_ && Clock::now() >= *end_);
+  }
+
+  // The progress: the share of this pass's queue done, or of the time limit spent if more (a run
+  // that ends at its time limit still moves its bar).
+  double progress(double queue_done) const {
+    double time_spent = 0;
+    if (end_)
+      time_spent = std::chrono::duration<double>(Clock::now() - began_).count() /
+                   std::max(1e-9, std::chrono::duration<double>(*end_ - began_).count());
+    return std::clamp(std::max(queue_done, time_spent), 0.0, 1.0);
   }
 
   // One pass over the tets below the goal, worst first; false if the time limit stopped it.
-  bool run_pass(Clock::time_point start) {
+  bool run_pass() {
     queue_ = Queue();
     for (TetId t = 0; t < mesh_.tet_slots(); ++t) push_if_bad(t);
     const double initial = static_cast<double>(std::max<std::size_t>(1, result_.below_goal_before));
@@ -233,8 +247,8 @@ class Schedule {
       queue_.pop();
       if (!mesh_.alive(e.tet) || mesh_.tet(e.tet) != e.corners || mesh_.quality(e.tet) != e.quality) continue;
       if (++tried % kPollEvery == 0) {
-        if (!may_go_on(start)) return false;
-        if (params_.progress) params_.progress(std::clamp(1.0 - static_cast<double>(queue_.size()) / initial, 0.0, 1.0));
+        if (!may_go_on()) return false;
+        if (params_.progress) params_.progress(progress(1.0 - static_cast<double>(queue_.size()) / initial));
       }
       if (unchanged_since_failure(e.tet)) continue;
       if (!improve_tet(e.tet)) failed_[sorted(e.corners)] = epoch_;
@@ -371,6 +385,8 @@ class Schedule {
   std::uint64_t epoch_ = 0;                  // successful moves so far
   std::vector<std::uint64_t> vertex_epoch_;  // the last move that changed a tet of the vertex
   std::unordered_map<Tetrahedron, std::uint64_t, TetHash> failed_;  // sorted corners -> epoch
+  Clock::time_point began_;
+  std::optional<Clock::time_point> end_;
 };
 
 }  // namespace
@@ -380,8 +396,13 @@ void check_improve_params(const ImproveParams& p) {
   check_parameter("improve", info.goal_min_dihedral_deg, p.goal_min_dihedral_deg);
   check_parameter("improve", info.goal_max_dihedral_deg, p.goal_max_dihedral_deg);
   check_parameter("improve", info.max_passes, static_cast<double>(p.max_passes));
-  if (!(p.time_limit_seconds >= 0 && std::isfinite(p.time_limit_seconds)))
-    throw InvalidInput("improve: time_limit_seconds must be finite and >= 0");
+  if (!(p.time_limit_seconds == kAutomaticTimeLimit || (p.time_limit_seconds >= 0 && std::isfinite(p.time_limit_seconds))))
+    throw InvalidInput("improve: time_limit_seconds must be -1 (automatic), 0 (none) or a positive number of seconds, not " +
+                       parameter_text(p.time_limit_seconds));
+}
+
+double automatic_improve_time_limit(std::size_t tets) {
+  return kAutomaticTimeLimitFloorSeconds + kAutomaticTimeLimitPerTetSeconds * static_cast<double>(tets);
 }
 
 ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
@@ -446,7 +467,13 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   if (limiting.size() > kListedLimitingEdges) limiting.resize(kListedLimitingEdges);
   result.limiting_edges = std::move(limiting);
 
-  Schedule schedule(complex, params, result);
+  // The time limit counts from the start above (the setup too), shortened to the command's deadline.
+  const double own_limit = params.time_limit_seconds == kAutomaticTimeLimit ? automatic_improve_time_limit(mesh.tets.size())
+                                                                             : params.time_limit_seconds;
+  const double limit = params.deadline.limit(own_limit);
+  std::optional<Clock::time_point> end;
+  if (limit > 0) end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
+  Schedule schedule(complex, params, result, start, end);
   schedule.run();
   result.below_goal_after = schedule.below_goal();
   if (result.passes > 0) {

@@ -6,6 +6,7 @@
 /// (apps/), the Python module (python/) and the batch are doors onto these functions, so that
 /// each gives the same figures for the same input. docs/architecture.md, "Commands".
 
+#include "meshprep/core/deadline.h"
 #include "meshprep/core/mesh.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/quality/report.h"
@@ -19,15 +20,22 @@
 namespace meshprep {
 
 /// The caller's hooks into long work: progress in [0, 1] (it may throw Cancelled to stop the
-/// work), a cancellation poll (for TetGen and the tet improvement) and the name of each long step
-/// as it starts ("improving 5210 tets ..."). Any may be empty.
+/// work), a cancellation poll (for TetGen and the tet improvement), the name of each long step as
+/// it starts ("improving 5210 tets ...") and the whole command's deadline. Any may be empty.
+/// `progress` and `cancelled` stop the work for the user (Ctrl-C, a token); the deadline stops
+/// only the steps that have nothing usable before they end (until_deadline), while the tet
+/// improvement takes the time left as its time limit and ends with its best tets.
 struct CommandHooks {
   std::function<void(double)> progress;
   std::function<bool()> cancelled;
   std::function<void(const std::string&)> step;
+  Deadline deadline;
   void announce(const std::string& what) const {
     if (step) step(what);
   }
+  /// These hooks stopping at the deadline too: progress throws TimeLimitReached, cancelled says
+  /// true (the step then throws Cancelled; the caller tells the two apart by deadline.passed()).
+  CommandHooks until_deadline() const;
 };
 
 /// One line the front end shows the user beside the result: "note: ..." (something changed or

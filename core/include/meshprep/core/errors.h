@@ -1,7 +1,7 @@
 #pragma once
 /// \file errors.h
 /// The exception family thrown by every meshprep library. The library never prints and never
-/// exits; the CLI maps these to exit codes (InvalidInput/IoError -> 2, WriteError and the others -> 1).
+/// exits; exit_code_of (exit_codes.h) maps these to the exit codes of the contract.
 
 #include <stdexcept>
 #include <string>
@@ -45,6 +45,12 @@ class SolverError : public Error {
 class Cancelled : public Error {
  public:
   using Error::Error;
+};
+
+/// The command's time limit (deadline.h) came before anything usable existed: nothing is written.
+class TimeLimitReached : public Cancelled {
+ public:
+  using Cancelled::Cancelled;
 };
 
 }  // namespace meshprep

@@ -31,6 +31,7 @@
 /// one the two boundary faces force, or one of several has a dihedral angle <= alpha / 2. Edges
 /// where the better of the two is below the goal are listed with that bound.
 
+#include "meshprep/core/deadline.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/fem/tet_mesh.h"
 
@@ -42,6 +43,18 @@
 
 namespace meshprep {
 
+/// ImproveParams::time_limit_seconds for the automatic time limit.
+inline constexpr double kAutomaticTimeLimit = -1;
+/// The automatic time limit, floor + per tet. On TetGen's own tets of the 19 CAD parts of the
+/// shared data, the runs that reach the goal take 0.2-22 µs per tet and at most 2.5 s; those that
+/// cannot reach it gain little after their first seconds (bench/RESULTS.md, "Time budgets"). So
+/// about twice the slowest goal-reaching run per tet (the VM's speed drifts up to 2x), and a floor
+/// of four times the longest, for the small meshes whose runs cannot reach the goal.
+inline constexpr double kAutomaticTimeLimitFloorSeconds = 10;
+inline constexpr double kAutomaticTimeLimitPerTetSeconds = 50e-6;
+/// kAutomaticTimeLimitFloorSeconds + kAutomaticTimeLimitPerTetSeconds * tets.
+double automatic_improve_time_limit(std::size_t tets);
+
 struct ImproveParams {
   /// A tet is below the goal if a dihedral angle is smaller than goal_min_dihedral_deg or larger
   /// than goal_max_dihedral_deg; those are the tets the improvement works on. Degrees,
@@ -52,7 +65,11 @@ struct ImproveParams {
   bool smoothing = true;          ///< moving free vertices
   bool insertion = true;          ///< new interior vertices
   std::size_t max_passes = 10;    ///< >= 1
-  double time_limit_seconds = 0;  ///< 0: none; the run stops after the move under way
+  /// kAutomaticTimeLimit (the default): automatic_improve_time_limit; 0: none; the run stops after
+  /// the move under way, with the best tets so far.
+  double time_limit_seconds = kAutomaticTimeLimit;
+  /// The whole command's deadline: the time limit is shortened to the time left.
+  Deadline deadline;
   std::function<void(double fraction)> progress;  ///< optional, the share of the goal reached
   /// Optional, asked every few hundred moves, and per block of tets while the run sets up (from
   /// any of the threads doing it: it must be thread-safe); true: throw Cancelled.

@@ -11,6 +11,7 @@
 /// would make the surface cross itself is an error, never a silent result. write_pipeline_outputs
 /// (pipeline_outputs.h) turns the result into files.
 
+#include "meshprep/core/deadline.h"
 #include "meshprep/core/mesh.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/fem/fem_verdict.h"
@@ -99,14 +100,18 @@ struct PipelineObserver {
   /// Asked at every stage's start, at every progress report and every 50 ms while TetGen runs;
   /// true stops the run at that point (run_pipeline throws Cancelled).
   std::function<bool()> cancelled;
+  /// The whole run's deadline: until the tets exist, passing it stops the run (TimeLimitReached);
+  /// the improvement then takes the time left as its time limit and ends with its best tets.
+  Deadline deadline;
 };
 
 /// Run the pipeline on the file `input` (.xyz points, or a surface mesh).
-/// \throws InvalidInput for an unreadable, malformed or non-manifold input (the message names the
-///         file); IoError if unreadable; PipelineFailed when the work cannot be done (the input
-///         cannot be made FEM-ready as configured, e.g. an open surface without extrude_base; a
-///         stage made the surface cross itself); Cancelled when the observer said so. A surface
-///         TetGen rejects is not an exception: the result says why in `fem`.
+/// \throws InvalidInput for an unreadable, malformed or non-manifold input, or one no stage that
+///         runs can make FEM-ready (split vertices, crossings, an open surface that is no height
+///         field; the message names the file); IoError if unreadable; PipelineFailed when the work
+///         cannot be done (a stage made the surface cross itself, the repair left holes); Cancelled
+///         when the observer said so, TimeLimitReached when its deadline came before the tets. A
+///         surface TetGen rejects is not an exception: the result says why in `fem`.
 PipelineResult run_pipeline(const std::string& input, const PipelineConfig& config,
                             const PipelineObserver& observer = {});
 
