@@ -25,7 +25,7 @@ struct RepairOptions {
 
 int run_repair(const RepairOptions& o) {
   check_output_files({o.input}, {o.output, o.json});
-  const RepairOutcome outcome = repair_command(read_soup(o.input), o.params, {o.input, o.output});
+  const RepairOutcome outcome = repair_command(read_soup(o.input), o.params, {o.input, o.output}, terminal_hooks());
   write_soup(outcome.surface, o.output);
   nlohmann::ordered_json json;
   json["input"] = o.input;

@@ -361,6 +361,10 @@ python3 -c "
 import json; j = json.load(open('improved.json'))
 assert j['stopped'] is None and j['improvement']['stopped_by'] != 'time limit', j['improvement']['stopped_by']" &&
   ok || bad "improve without a limit: stopped"
+# The repair stops at the deadline too (between its steps): nothing usable, exit 124, no file.
+"$bin" repair "$src/examples/data/fandisk.off" -o repaired.off --time-limit 0.001 2> err.txt
+expect_exit "repair --time-limit" 124 $?
+[ ! -e repaired.off ] && ok || bad "repair --time-limit wrote repaired.off"
 # An output that cannot be written is bad usage found before any work: exit 2, one line, on the
 # slowest input here too.
 "$bin" pipeline "$src/examples/data/jacksboro_10k.xyz" -o /proc/version/out 2> err.txt

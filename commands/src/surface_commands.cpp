@@ -82,12 +82,15 @@ std::string repair_summary(const RepairResult& r) {
          " copies of points where parts touch";
 }
 
-RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, const CommandNames& names) {
+RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, const CommandNames& names,
+                             const CommandHooks& hooks) {
   if (input.triangles.empty()) throw InvalidInput(names.input + ": no faces to repair");
   RepairOutcome outcome;
+  RepairParams stoppable = params;
+  stoppable.cancelled = hooks.until_deadline().cancelled;
   const RepairResult& result = outcome.result = [&] {
     try {
-      return repair(input, params);
+      return repair(input, stoppable);
     } catch (const InvalidInput& e) {
       throw InvalidInput(names.input + ": " + e.what());
     }

@@ -237,7 +237,16 @@ class Run {
     LoadedMesh loaded;
     loaded.soup = given_ ? *given_->surface : read_soup(result_.input, &loaded.read);
     record.faces_before = loaded.soup.triangles.size();
-    RepairResult r = on_input([&] { return repair(loaded.soup, config_.repair.params); });
+    RepairParams params = config_.repair.params;
+    params.cancelled = [this] { return observer_.deadline.passed() || (observer_.cancelled && observer_.cancelled()); };
+    RepairResult r = on_input([&] {
+      try {
+        return repair(loaded.soup, params);
+      } catch (const Cancelled&) {
+        stop_if_cancelled();  // the user's stop or the deadline, said as such
+        throw;
+      }
+    });
     // A closed input stays a solid: the terrain rule (an open sheet extruded into a block) is for
     // sheets the file holds, never for what the repair left open of a solid.
     if (r.input_closed && r.open_holes > 0)

@@ -184,8 +184,9 @@ py::dict call_repair(const py::object& surface, const py::object& cancel, py::di
   const PipelineConfig config = configured(kRepair, kw);
   TriangleSoup input = surface_arg(surface, "surface");
   CallControl control(py::none(), token_of(cancel), options);
+  const CommandHooks hooks = control.hooks("repair");
   RepairOutcome outcome =
-      control.run([&] { return repair_command(std::move(input), config.repair.params, names_of("repair")); });
+      control.run([&] { return repair_command(std::move(input), config.repair.params, names_of("repair"), hooks); });
   return result(surface_object(std::move(outcome.surface)), outcome.report, outcome.messages, std::nullopt);
 }
 

@@ -305,9 +305,10 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
 }  // namespace
 
 SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const std::vector<FaceEdge>& uses,
-                                                 bool keep_cavities) {
+                                                 bool keep_cavities, const std::function<void()>& poll) {
   SelfIntersectionCounts counts;
   for (int round = 0; round < 3; ++round) {
+    poll();
     // Every pass after the first looks at a surface the one before changed.
     const Pass pass = one_pass(surface, round == 0 ? &uses : nullptr, keep_cavities);
     if (round == 0) counts.intersecting_pairs = pass.pairs;

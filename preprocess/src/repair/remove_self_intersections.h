@@ -6,6 +6,7 @@
 #include "meshprep/quality/face_edges.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace meshprep::detail {
@@ -30,9 +31,9 @@ struct SelfIntersectionCounts {
 /// Where the union's parts touch at a point or along an edge, they are held apart by a hair
 /// (separate_pinches.h). The output's new points are the exact ones rounded to doubles; if that rounding makes faces
 /// cross again, the pass runs again on the result (at most three passes). `uses` is
-/// sorted_face_edges(surface), for the first pass.
+/// sorted_face_edges(surface), for the first pass; `poll` is called before each pass (it may throw).
 /// \pre consistently oriented, closed components outward (orient_components)
 SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const std::vector<FaceEdge>& uses,
-                                                 bool keep_cavities);
+                                                 bool keep_cavities, const std::function<void()>& poll);
 
 }  // namespace meshprep::detail

@@ -40,6 +40,9 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
     throw InvalidInput("repair: the weld tolerance must be a finite number >= 0");
   if (params.max_hole) check_parameter("repair", repair_parameters().max_hole, *params.max_hole);
   const auto start = std::chrono::steady_clock::now();
+  const auto poll = [&params] {
+    if (params.cancelled && params.cancelled()) throw Cancelled("repair stopped");
+  };
   RepairResult result;
   result.weld_distance = params.weld_tolerance * detail::median_edge_length(surface);
   const std::size_t input_faces = surface.triangles.size();
@@ -52,16 +55,19 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (surface.triangles.empty()) refuse_empty(input_faces, result);
   // The steps below walk the same sorted face edges: sorted once, and again only after a step
   // that changed the faces.
+  poll();
   std::vector<FaceEdge> uses = sorted_face_edges(surface);
   detail::SplitCounts split = detail::split_nonmanifold(surface, uses);
   result.split_edges = split.split_edges;
   result.split_vertices = split.split_vertices;
   if (split.split_vertices > 0) uses = sorted_face_edges(surface);
+  poll();
   const detail::OrientCounts orient = detail::orient_components(surface, uses);
   result.components = orient.components;
   result.flipped_faces = orient.flipped_faces;
   result.inverted_components = orient.inverted_components;
   if (orient.flipped_faces > 0 || orient.inverted_components > 0) uses = sorted_face_edges(surface);
+  poll();
   result.holes = detail::fill_holes(surface, uses, params.max_hole);
   for (const RepairHole& hole : result.holes) ++(hole.filled ? result.filled_holes : result.open_holes);
   // A bow-tie on a hole's rim is one fan again once the patch joins its fans (fill_holes.cpp):
@@ -72,9 +78,10 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
     result.split_edges = split.split_edges;
     result.split_vertices = split.split_vertices;
   }
+  poll();
   if (result.filled_holes > 0) uses = sorted_face_edges(surface);
   const detail::SelfIntersectionCounts crossing =
-      detail::remove_self_intersections(surface, uses, params.keep_cavities);
+      detail::remove_self_intersections(surface, uses, params.keep_cavities, poll);
   result.intersecting_pairs = crossing.intersecting_pairs;
   result.cut_faces = crossing.cut_faces;
   result.removed_faces = crossing.removed_faces;

@@ -53,7 +53,8 @@ struct RepairOutcome : SurfaceOutcome {
 
 /// Repairs `input`. report: faces, vertices, the stage's record, readiness.
 /// \throws SolverError when what is left is not closed, manifold and free of self-intersections.
-RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, const CommandNames& names);
+RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, const CommandNames& names,
+                             const CommandHooks& hooks = {});
 
 /// "welded 28 vertices, removed 0 degenerate and 1 duplicate faces, ...": what the repair did.
 std::string repair_summary(const RepairResult& result);

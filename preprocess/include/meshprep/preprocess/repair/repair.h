@@ -36,6 +36,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,9 @@ struct RepairParams {
   /// A closed part inside another that touches nothing is kept as the wall of a void (facing
   /// inwards) instead of being dropped.
   bool keep_cavities = false;
+  /// Optional, asked between the steps and between the self-intersection step's passes; true:
+  /// throw Cancelled (the surface is then partly repaired: repair a copy to keep the input).
+  std::function<bool()> cancelled;
 };
 
 /// One boundary loop, filled or left open. Lengths and areas are in the surface's units.
