@@ -163,5 +163,11 @@ Action add_pipeline_command(CLI::App& app);
 Action add_improve_command(CLI::App& app);
 Action add_repair_command(CLI::App& app);
 Action add_patches_command(CLI::App& app);
+Action add_batch_command(CLI::App& app);
+
+/// `meshprep batch ARGUMENTS...`: runs the batch driver (python3 -m meshprep.batch) in this process's
+/// place with `arguments`, this binary as the one each part runs. Returns only by throwing.
+/// \throws InvalidInput when the driver cannot be started.
+int run_batch(const std::vector<std::string>& arguments);
 
 }  // namespace meshprep::cli

@@ -88,13 +88,14 @@ int main(int argc, char** argv) {
   add(cli::add_pipeline_command);
   add(cli::add_repair_command);
   add(cli::add_patches_command);
+  add(cli::add_batch_command);
   CLI::App* help = app.add_subcommand("help", "Show this help, or a command's (meshprep help COMMAND)");
   std::string help_topic;
   help->add_option("command", help_topic, "The command to describe");
   // One --time-limit for every command: the whole command's deadline (interrupt.h).
   double time_limit_seconds = 0;
   for (CLI::App* command : app.get_subcommands({}))
-    if (command != help)
+    if (command != help && command->get_name() != "batch")  // the batch's is each part's
       command
           ->add_option("--time-limit,--timeout", time_limit_seconds,
                        "Stop the whole command after this many seconds: the tet improvement ends with its best tets "
@@ -102,6 +103,15 @@ int main(int argc, char** argv) {
           ->check(cli::positive());
   cli::refuse_non_finite_numbers(app);
 
+  // The batch's arguments are its driver's, `--` and the pipeline flags after it included.
+  if (argc >= 2 && std::string(argv[1]) == "batch") {
+    try {
+      return cli::run_batch(std::vector<std::string>(argv + 2, argv + argc));
+    } catch (const std::exception& e) {
+      std::cerr << "meshprep: error: " << e.what() << '\n';
+      return cli::kBadInput;
+    }
+  }
   // CLI11 takes an unknown first word for a stray argument ("A subcommand is required").
   if (argc >= 2 && argv[1][0] != '-' && !find_command(app, argv[1])) {
     std::cerr << "meshprep: error: " << unknown_command(app, argv[1]) << " (see meshprep --help)\n";

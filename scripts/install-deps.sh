@@ -21,6 +21,9 @@ packages=(
   # tests/python/test_xdmf_dolfinx.py (pytest): dolfinx reads our .xdmf and solves on it, h5py
   # reads its HDF5 data
   python3-pytest python3-dolfinx python3-h5py
+  # meshprep batch --scheduler runs the parts on a Dask cluster; tests/python/test_batch.py
+  # starts a local one
+  python3-distributed
   # CalculiX, the solver that runs a static job on our Abaqus decks (tests/calculix.py)
   calculix-ccx
   # the browser that renders the HTML reports in the tests
