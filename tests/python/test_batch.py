@@ -425,3 +425,38 @@ def test_on_a_dask_cluster_a_part_whose_worker_is_killed_runs_again(tmp_path):
     assert all(done[f"ball{k}"]["status"] == "ready" for k in range(4))
     assert not processes_mentioning(f"partial-{killed_pid}@")  # the killed worker's child died with it
     assert_only_complete_parts(out)
+
+
+def test_on_a_dask_cluster_a_killed_batch_resumes_where_it_stopped(tmp_path):
+    distributed = pytest.importorskip(
+        "distributed", reason="distributed is not importable (apt-get install python3-distributed)")
+    parts = tmp_path / "parts"
+    spheres(parts, 4, level=2)
+    shutil.copy(DATA / "handle.off", parts)
+    write_malformed(parts / "broken.off")
+    out = tmp_path / "out"
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        args = (parts, "-o", out, "--scheduler", cluster.scheduler_address)
+        first = start_batch(*args, "--quiet")
+        wait_for(lambda: out.is_dir() and records(out), "a finished part")
+        first.kill()  # SIGKILL: the batch leaves no word; what its workers were running may still finish
+        first.communicate()
+        finished = {d.name: (d / "batch.json").read_bytes() for d in out.iterdir()
+                    if d.is_dir() and not d.name.startswith(".")}
+        wait_for(lambda: not any(client.processing().values()) and not list(out.glob(".*.partial-*")),
+                 "the cluster to finish what the killed batch had started")
+
+        second = run_batch(*args, "--json", "-")
+
+    assert second.returncode == 1, second.stderr  # the malformed part
+    this_run = json.loads(second.stdout)["batch"]
+    assert sorted(this_run["ran"] + this_run["skipped"]) == ["ball0", "ball1", "ball2", "ball3", "broken", "handle"]
+    assert set(finished) - {"broken"} <= set(this_run["skipped"])
+    for name, content in finished.items():
+        if name != "broken":  # a part with nothing written runs again; the others are kept
+            assert (out / name / "batch.json").read_bytes() == content
+    done = records(out)
+    assert all(done[name]["exit_code"] in (0, 1) for name in done if name != "broken")
+    assert done["broken"]["exit_code"] == 2
+    assert_only_complete_parts(out)
