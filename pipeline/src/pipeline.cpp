@@ -101,6 +101,9 @@ class Run {
     }
   }
 
+  // For the steps with nothing usable before their end (TetGen, the repair): the user's stop or the deadline.
+  bool stop_or_deadline() const { return observer_.deadline.passed() || (observer_.cancelled && observer_.cancelled()); }
+
   // The user's stop ends the run anywhere; the deadline only until the tets exist (from there on the
   // improvement takes the time left, and the rest is finished).
   void stop_if_cancelled() const {
@@ -238,7 +241,7 @@ class Run {
     loaded.soup = given_ ? *given_->surface : read_soup(result_.input, &loaded.read);
     record.faces_before = loaded.soup.triangles.size();
     RepairParams params = config_.repair.params;
-    params.cancelled = [this] { return observer_.deadline.passed() || (observer_.cancelled && observer_.cancelled()); };
+    params.cancelled = [this] { return stop_or_deadline(); };
     RepairResult r = on_input([&] {
       try {
         return repair(loaded.soup, params);
@@ -460,7 +463,7 @@ class Run {
     double volume_change = 0;
     if (std::optional<SurfacePlc> plc = prepare_tet_input(record)) {
       params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
-      params.cancelled = [this] { return observer_.deadline.passed() || (observer_.cancelled && observer_.cancelled()); };
+      params.cancelled = [this] { return stop_or_deadline(); };
       try {
         result_.tets = tetrahedralize_plc(*plc, params);
         volume_change = volume_change_relative(*plc, *result_.tets);
