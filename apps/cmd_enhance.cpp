@@ -1,5 +1,6 @@
 // meshprep enhance IN -o OUT [--reference ORIGINAL] [--iterations K] [--max-deviation E]
-//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--threads N] [--json FILE|-]
+//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--enhance-time-limit S] [--threads N]
+//   [--json FILE|-]
 #include "cli_common.h"
 #include "cli_parameters.h"
 #include "interrupt.h"
@@ -48,7 +49,8 @@ int run_enhance(const EnhanceOptions& o) {
               << o.command.params.target_min_angle_deg << " deg " << 100 * result.before.under_target_fraction << " % -> "
               << 100 * result.after.under_target_fraction << " %, smallest angle " << result.before.min_angle_deg
               << " -> " << result.after.min_angle_deg << " deg, Hausdorff to the " << (reference ? "reference " : "input ")
-              << outcome.quality.reference->hausdorff_relative << " of the diagonal\n";
+              << outcome.quality.reference->hausdorff_relative << " of the diagonal"
+              << (result.stopped_by_time_limit ? " (stopped at the time limit: the best rounds so far)" : "") << "\n";
   print_messages(outcome.messages);
   return kSuccess;
 }
@@ -71,6 +73,7 @@ Action add_enhance_command(CLI::App& app) {
   add_parameter(*cmd, p.flips, o->command.params.flips);
   add_choice(*cmd, p.remesh, o->command.params.remesh, enhance_remesh_modes());
   add_parameter(*cmd, p.max_faces, o->command.params.max_faces);
+  add_parameter(*cmd, p.time_limit_seconds, o->command.params.time_limit_seconds);
   add_samples_option(*cmd, o->command.quality.distance_samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");

@@ -98,8 +98,9 @@ int main(int argc, char** argv) {
     if (command != help && command->get_name() != "batch")  // the batch's is each part's
       command
           ->add_option("--time-limit,--timeout", time_limit_seconds,
-                       "Stop the whole command after this many seconds: the tet improvement ends with its best tets "
-                       "(\"stopped\": \"time limit\" in --json), any other step with nothing written (exit 124)")
+                       "Stop the whole command after this many seconds: the enhancement and the tet improvement end "
+                       "with their best result (\"stopped\": \"time limit\" in --json), any other step with "
+                       "nothing written (exit 124)")
           ->check(cli::positive());
   cli::refuse_non_finite_numbers(app);
 

@@ -361,6 +361,14 @@ python3 -c "
 import json; j = json.load(open('improved.json'))
 assert j['stopped'] is None and j['improvement']['stopped_by'] != 'time limit', j['improvement']['stopped_by']" &&
   ok || bad "improve without a limit: stopped"
+# The enhancement is anytime too: at the deadline it ends with its best rounds (here none: the
+# input), written, and says so.
+"$bin" enhance "$src/examples/data/fandisk.off" -o enhanced.off --time-limit 0.001 --json enhanced.json > out.txt 2> err.txt
+expect_exit "enhance --time-limit" 0 $?
+[ -s enhanced.off ] && python3 -c "
+import json; j = json.load(open('enhanced.json'))
+assert j['stopped'] == 'time limit' and j['rounds'] == 0 and j['faces_after'] == j['faces_before'], j" &&
+  grep -q "stopped at the time limit" out.txt && ok || bad "enhance --time-limit: the input as the best, or the report"
 # The repair stops at the deadline too (between its steps): nothing usable, exit 124, no file.
 "$bin" repair "$src/examples/data/fandisk.off" -o repaired.off --time-limit 0.001 2> err.txt
 expect_exit "repair --time-limit" 124 $?

@@ -90,6 +90,7 @@ TEST(Parameters, EveryDefaultLiesInItsRange) {
       {&e.max_deviation, EnhanceParams::kLargestAutoDeviation},
       {&e.target_min_angle_deg, enhance.target_min_angle_deg},
       {&e.feature_angle_deg, enhance.feature_angle_deg},
+      {&e.time_limit_seconds, enhance.time_limit_seconds},
       {&quality_parameters().distance_samples, static_cast<double>(quality.distance_samples)},
       {&quality_parameters().distance_samples, static_cast<double>(PipelineConfig().quality.params.distance_samples)},
       {&t.radius_edge, tets.radius_edge},

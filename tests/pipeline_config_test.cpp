@@ -149,6 +149,9 @@ TEST(PipelineConfig, TheLibrariesRangesAreCheckedWithTheFile) {
   config = PipelineConfig();
   config.improve.params.time_limit_seconds = INFINITY;
   EXPECT_THROW(check_config(config), InvalidInput);
+  config = PipelineConfig();
+  config.enhance.params.time_limit_seconds = -0.5;  // in the key's range [-1, inf), neither automatic nor a limit
+  EXPECT_THROW(check_config(config), InvalidInput);
   EXPECT_NO_THROW(check_config(PipelineConfig()));
 }
 

@@ -47,7 +47,9 @@ EnhanceOutcome enhance_command(LoadedMesh input, const TriangleSoup* reference, 
   require_all_faces(input, "enhancement");
   if (reference && reference->triangles.empty()) throw InvalidInput(reference_name + ": the reference has no faces");
   EnhanceParams params = command.params;
-  params.progress = hooks.until_deadline().progress;
+  // Anytime: at the deadline the enhancement ends with its best rounds, written and judged.
+  params.progress = hooks.progress;
+  params.deadline = hooks.deadline;
   EnhanceOutcome outcome;
   const EnhanceResult& result = outcome.result =
       run_stage_on(names.input, [&] { return enhance(input.mesh, reference, params); });

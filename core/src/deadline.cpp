@@ -23,4 +23,9 @@ double Deadline::limit(double own_seconds) const {
   return own_seconds > 0 ? std::min(own_seconds, left) : left;
 }
 
+Deadline Deadline::share(double fraction) const {
+  if (!end_) return {};
+  return in_seconds(std::max(fraction * seconds_left(), std::numeric_limits<double>::min()));
+}
+
 }  // namespace meshprep

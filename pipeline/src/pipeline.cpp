@@ -33,6 +33,9 @@
 namespace meshprep {
 namespace {
 
+// The enhancement's share of the time left when it starts, under a --time-limit.
+constexpr double kEnhanceShareOfTimeLeft = 0.5;
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -409,9 +412,14 @@ class Run {
     StageRecord record = started("enhance");
     EnhanceParams params = config_.enhance.params;
     params.progress = progress();
+    // Anytime: it ends with its best rounds at its own limit or at half the run's time left, so that
+    // the report, TetGen and the improvement still have the other half.
+    params.deadline = observer_.deadline.share(kEnhanceShareOfTimeLeft);
     const EnhanceResult e = on_input([&] { return enhance(mesh_, &result_.input_surface, params); });
+    result_.enhance_stopped_by_time_limit = e.stopped_by_time_limit;
     record.seconds = e.seconds;
-    record.details = picked(to_json(e, params), {"rounds", "kept_round", "flips", "cap_flips", "removed_vertices", "split_edges"});
+    record.details = picked(to_json(e, params),
+                            {"rounds", "kept_round", "flips", "cap_flips", "removed_vertices", "split_edges", "stopped"});
     record.details["smallest_angle_before_deg"] = e.before.min_angle_deg;
     record.details["smallest_angle_after_deg"] = e.after.min_angle_deg;
     record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";

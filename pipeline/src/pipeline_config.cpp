@@ -284,6 +284,7 @@ std::vector<Key> enhance_keys(PipelineConfig::Enhance& e) {
   keys.push_back(flag("enhance", info.flips, p.flips));
   keys.push_back(choice("enhance", info.remesh.key, p.remesh, enhance_remesh_modes(), info.remesh.help));
   keys.push_back(count("enhance", info.max_faces, p.max_faces));
+  keys.push_back(number("enhance", info.time_limit_seconds, p.time_limit_seconds));
   return keys;
 }
 
@@ -401,6 +402,7 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
 }
 
 void check_config(const PipelineConfig& config) {
+  check_enhance_params(config.enhance.params);
   check_tet_params(config.tetrahedralize.params);
   check_improve_params(config.improve.params);
   check_thresholds(config.verdict);

@@ -93,8 +93,10 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   if (result.from_points) json["input_points"] = result.input_points;
   json["fem_ready"] = result.fem.ready;
   json["problems"] = result.fem.problems;
-  // "time limit" when the improvement ended at its time limit or the run's (the figures are its best tets').
-  json["stopped"] = result.improvement && result.improvement->stopped_by == "time limit" ? Json("time limit") : Json(nullptr);
+  // "time limit" when an anytime step (the enhancement, the improvement) ended at its time limit or
+  // at the run's deadline: the figures are its best result's; the stage's record says which.
+  const bool improvement_stopped = result.improvement && result.improvement->stopped_by == "time limit";
+  json["stopped"] = improvement_stopped || result.enhance_stopped_by_time_limit ? Json("time limit") : Json(nullptr);
   json["thresholds"] = to_json(TetVerdict{result.fem.checks});  // each beside the final tets' figure
   Json stages = Json::array();
   for (const StageRecord& s : result.stages) stages.push_back(stage_json(s));

@@ -342,8 +342,8 @@ std::string doc(const char* what, const Keywords& spec) {
   return std::string(what) + "\n\nKeywords (the configuration file's keys, docs/pipeline.md):\n" +
          keyword_doc(spec, command_defaults()) +
          "    threads (integer >= 0, default 0): threads for this call's parallel parts; 0 = all cores\n"
-         "    time_limit (seconds >= 0, default 0): the whole call's limit; the tet improvement ends there with its best "
-         "tets, any other step raises TimeoutError; 0 = none\n";
+         "    time_limit (seconds >= 0, default 0): the whole call's limit; the enhancement and the tet improvement "
+         "end there with their best result, any other step raises TimeoutError; 0 = none\n";
 }
 
 }  // namespace

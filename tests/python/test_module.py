@@ -181,6 +181,17 @@ def test_time_limit_ends_the_improvement_with_its_best_tets():
     assert result.tets.tets.shape == tets.tets.shape
 
 
+def test_time_limit_ends_the_enhancement_with_its_best_rounds():
+    # Anytime too: at the deadline no round starts; the surface so far (here the input's faces) is
+    # the result, marked, not a TimeoutError. Without a limit the rounds run.
+    surface = meshprep.read(DATA / "handle.off")
+    result = meshprep.enhance(surface, time_limit=1e-9)
+    assert result.report["stopped"] == "time limit" and result.report["rounds"] == 0
+    assert result.surface.faces.shape == surface.faces.shape
+    free = meshprep.enhance(surface, time_limit_seconds=0)
+    assert free.report["stopped"] is None and free.report["rounds"] > 0
+
+
 def test_time_limit_before_anything_usable_raises_timeout_error():
     surface = meshprep.read(DATA / "handle.off")
     with pytest.raises(meshprep.TimeoutError, match="time_limit") as caught:

@@ -50,6 +50,10 @@ class Remesher {
     for (const auto e : mesh_.edges()) flip_stack_.push_back(e);
     flip_planar_to_delaunay([](EdgeHandle) {});
     for (std::size_t i = 0; i < rules_.iterations; ++i) {
+      if (rules_.out_of_time && rules_.out_of_time()) {
+        counts_.stopped_by_time = true;
+        break;
+      }
       split_long_edges();
       collapse_short_edges();
       flip_toward_valence_six();

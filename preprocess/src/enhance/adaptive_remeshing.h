@@ -13,6 +13,7 @@
 #include "meshprep/core/mesh.h"
 
 #include <cstddef>
+#include <functional>
 
 namespace meshprep::detail {
 
@@ -23,11 +24,13 @@ struct RemeshRules {
   double max_deviation = 0;
   double target_min_angle_deg = 20;  ///< a flip may not make a face's smallest angle worse than this and than it was
   std::size_t max_faces = 0;         ///< the splits stop at this many faces, collapses pending (0: no limit)
+  std::function<bool()> out_of_time; ///< optional, asked before each iteration: true stops the remeshing there
 };
 
 struct RemeshCounts {
   std::size_t splits = 0, collapses = 0, flips = 0;
   bool stopped_at_max_faces = false;
+  bool stopped_by_time = false;  ///< out_of_time said so: the mesh is half remeshed
 };
 
 /// Remeshes `mesh` to `sizing` (an edge's target is the mean of the field at its ends), every

@@ -104,7 +104,8 @@ constexpr double kProbesPerEdge = 0.25;
 // Remeshes the input to its sizing field; taken back if it made the surface cross itself.
 // Returns whether it was kept.
 bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const EnhanceParams& params, double max_deviation,
-            double diagonal, std::size_t allowed_intersections, EnhanceResult& result) {
+            double diagonal, std::size_t allowed_intersections, const std::function<bool()>& out_of_time,
+            EnhanceResult& result) {
   detail::SizingRules sizing_rules;
   sizing_rules.chord_tolerance = kChordShareOfBound * max_deviation;
   sizing_rules.max_faces = params.max_faces > 0 ? params.max_faces : std::max(kMaxFacesFloor, kMaxFacesPerInputFace * mesh.n_faces());
@@ -117,6 +118,7 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   // vertex is made at every strip and most are collapsed again (animation: 178,000 splits for
   // 7,000 faces), so the splits may go well past the field's faces before the collapses.
   rules.max_faces = kSplitHeadroom * sizing_rules.max_faces;
+  rules.out_of_time = out_of_time;
   const TriMesh before = mesh;
   // The estimate can fall short (a thin part's wedges): splits stopped at the limit leave a
   // half-refined surface, so the field is coarsened and the remeshing run again from the input.
@@ -136,6 +138,11 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   };
   for (int attempt = 0;; ++attempt) {
     counts = detail::remesh_to_sizing(mesh, constraints, sizing, rules);
+    if (counts.stopped_by_time) {
+      result.stopped_by_time_limit = true;
+      return taken_back("time limit", "the time limit came before it was done",
+                        find_self_intersections(MeshSoupView(mesh)).count);
+    }
     if (!counts.stopped_at_max_faces) break;
     if (attempt + 1 == kRemeshAttempts)
       return taken_back("face limit",
@@ -160,8 +167,9 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   return true;
 }
 
-void check(const EnhanceParams& params, const TriMesh& mesh) {
-  if (mesh.n_faces() == 0) throw InvalidInput("enhance: the mesh has no faces");
+}  // namespace
+
+void check_enhance_params(const EnhanceParams& params) {
   const EnhanceParameters& info = enhance_parameters();
   if (params.max_deviation) check_parameter("enhance", info.max_deviation, *params.max_deviation);
   check_parameter("enhance", info.target_min_angle_deg, params.target_min_angle_deg);
@@ -171,12 +179,19 @@ void check(const EnhanceParams& params, const TriMesh& mesh) {
       !(params.max_face_change >= 0 && params.max_face_change <= 1) ||
       !std::isfinite(params.tail_k))
     throw InvalidInput("enhance: the statistic's constants are out of range (flip dihedral in [0, 90), weights >= 0)");
+  if (!(params.time_limit_seconds == kAutomaticTimeLimit ||
+        (params.time_limit_seconds >= 0 && std::isfinite(params.time_limit_seconds))))
+    throw InvalidInput("enhance: time_limit_seconds must be -1 (automatic), 0 (none) or a positive number of seconds, not " +
+                       parameter_text(params.time_limit_seconds));
 }
 
-}  // namespace
+double automatic_enhance_time_limit(std::size_t faces) {
+  return kEnhanceTimeLimitFloorSeconds + kEnhanceTimeLimitPerFaceSeconds * static_cast<double>(faces);
+}
 
 EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const EnhanceParams& params) {
-  check(params, mesh);
+  if (mesh.n_faces() == 0) throw InvalidInput("enhance: the mesh has no faces");
+  check_enhance_params(params);
   const auto start = std::chrono::steady_clock::now();
   const ShiftedToOrigin near_origin(mesh);
   const TriangleSoup input = soup_from_mesh(mesh);
@@ -216,7 +231,16 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   result.max_deviation = relative_deviation;
   result.before = input_tail;
   result.faces_before = mesh.n_faces();
-  if (remeshing && !remesh(mesh, *features, params, max_deviation, diagonal, allowed_intersections, result))
+  // The time limit grows with the faces worked on: the input's, or the sizing field's once known.
+  const auto out_of_time = [&] {
+    if (params.deadline.passed()) return true;
+    const double limit = params.time_limit_seconds == kAutomaticTimeLimit
+                           ? automatic_enhance_time_limit(std::max(result.faces_before, result.sizing_faces))
+                           : params.time_limit_seconds;
+    return limit > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= limit;
+  };
+  if (remeshing &&
+      !remesh(mesh, *features, params, max_deviation, diagonal, allowed_intersections, out_of_time, result))
     features.emplace(mesh, surface, params.feature_angle_deg, false);
   detail::SurfaceConstraints& constraints = *features;
   for (const auto v : mesh.vertices()) {
@@ -248,6 +272,10 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   TriMesh best_mesh = mesh;
   int stale_rounds = 0;
   for (std::size_t round = 1; round <= params.iterations; ++round) {
+    if (out_of_time()) {
+      result.stopped_by_time_limit = true;
+      break;
+    }
     result.rounds = round;
     if (params.flips) {
       const TriMesh before_cleanup = mesh;

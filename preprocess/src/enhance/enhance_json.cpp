@@ -46,10 +46,12 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
                         {"flip_dihedral_deg", params.flip_dihedral_deg},
                         {"flips", params.flips},
                         {"remesh", choice_name(enhance_remesh_modes(), params.remesh)},
-                        {"max_faces", params.max_faces}};
+                        {"max_faces", params.max_faces},
+                        {"time_limit_seconds", params.time_limit_seconds}};
   json["tail_before"] = to_json(result.before);
   json["tail_after"] = to_json(result.after);
   json["time_seconds"] = result.seconds;
+  json["stopped"] = result.stopped_by_time_limit ? nlohmann::ordered_json("time limit") : nlohmann::ordered_json(nullptr);
   return json;
 }
 

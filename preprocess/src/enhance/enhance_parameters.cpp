@@ -2,6 +2,8 @@
 
 #include "meshprep/preprocess/enhance/enhance.h"
 
+#include <limits>
+
 namespace meshprep {
 
 const EnhanceParameters& enhance_parameters() {
@@ -26,7 +28,12 @@ const EnhanceParameters& enhance_parameters() {
        "than " + parameter_text(100 * EnhanceParams::kRemeshAbove) + " % of its faces are under the target angle",
        {}},
       {"max_faces", "--max-faces", "the remeshing's faces at most (the sizing is coarsened to fit); 0: ten times the input's, at least 50000",
-       {0, 1e12}}};
+       {0, 1e12}},
+      {"time_limit_seconds", "--enhance-time-limit",
+       "start no round after this many seconds (the best so far is kept); -1 = automatic, " +
+           parameter_text(kEnhanceTimeLimitFloorSeconds) + " s + " +
+           parameter_text(kEnhanceTimeLimitPerFaceSeconds * 1e3) + " ms per face; 0 = no limit",
+       {-1, std::numeric_limits<double>::infinity(), false, true}}};
   return parameters;
 }
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using namespace meshprep;
@@ -402,6 +403,48 @@ TEST(Enhance, RejectsBadParameters) {
   params = EnhanceParams();
   params.target_min_angle_deg = 70;
   EXPECT_THROW(enhance(mesh, nullptr, params), InvalidInput);
+  params = EnhanceParams();
+  for (const double limit : {-0.5, -2.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    params.time_limit_seconds = limit;
+    EXPECT_THROW(enhance(mesh, nullptr, params), InvalidInput) << limit;
+  }
   TriMesh empty;
   EXPECT_THROW(enhance(empty, nullptr), InvalidInput);
+}
+
+TEST(Enhance, AtTheDeadlineItEndsWithTheBestSoFarAndSaysSo) {
+  // The perturbed sphere the rounds improve (above), with a deadline already passed: no round
+  // starts, the input is kept (up to the final normal fit), and the result says why; a remeshing
+  // asked for is taken back under the "time limit" guard with the input's own faces.
+  TriangleSoup sphere = test::icosphere(3);
+  for (std::size_t i = 0; i < sphere.points.size(); i += 2) {
+    Vec3& p = sphere.points[i];
+    p = (p + 0.04 * p.cross(Vec3(0.3, 1, 0.2)).normalized()).normalized();
+  }
+  for (const EnhanceRemesh remesh : {EnhanceRemesh::Off, EnhanceRemesh::On}) {
+    TriMesh mesh = mesh_from_soup(sphere);
+    EnhanceParams params;
+    params.remesh = remesh;
+    params.deadline = Deadline::in_seconds(1e-9);
+    const EnhanceResult result = enhance(mesh, nullptr, params);
+    EXPECT_TRUE(result.stopped_by_time_limit);
+    EXPECT_EQ(result.rounds, 0u);
+    EXPECT_EQ(result.kept_round, 0u);
+    EXPECT_FALSE(result.remeshed);
+    EXPECT_EQ(mesh.n_faces(), sphere.triangles.size());
+    EXPECT_EQ(find_self_intersections(soup_from_mesh(mesh)).count, 0u);
+    EXPECT_EQ(to_json(result, params)["stopped"], "time limit");
+    const bool taken_back = std::any_of(result.taken_back.begin(), result.taken_back.end(), [](const TakenBack& t) {
+      return t.work == "remeshing" && t.guard == "time limit";
+    });
+    EXPECT_EQ(taken_back, remesh == EnhanceRemesh::On);
+  }
+  // No limit at all (0) and no deadline: the rounds run and the result is not marked.
+  TriMesh mesh = mesh_from_soup(sphere);
+  EnhanceParams params;
+  params.time_limit_seconds = 0;
+  const EnhanceResult result = enhance(mesh, nullptr, params);
+  EXPECT_FALSE(result.stopped_by_time_limit);
+  EXPECT_GT(result.rounds, 0u);
+  EXPECT_TRUE(to_json(result, params)["stopped"].is_null());
 }

@@ -10,6 +10,10 @@
 
 namespace meshprep {
 
+/// A step's own time limit (ImproveParams, EnhanceParams) set to this: the step's automatic limit,
+/// which grows with the mesh (each step states its rule); 0: none.
+inline constexpr double kAutomaticTimeLimit = -1;
+
 class Deadline {
  public:
   using Clock = std::chrono::steady_clock;
@@ -26,6 +30,9 @@ class Deadline {
   /// A step's own time limit (0: none) shortened to the time left; once the deadline has passed,
   /// the least positive limit, so that the step stops at its first look at the clock.
   double limit(double own_seconds) const;
+  /// A deadline `fraction` of the time left from now (no deadline when this one has none): the
+  /// share a step gets when others must still run after it.
+  Deadline share(double fraction) const;
 
  private:
   std::optional<Clock::time_point> end_;

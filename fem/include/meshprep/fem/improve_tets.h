@@ -43,8 +43,6 @@
 
 namespace meshprep {
 
-/// ImproveParams::time_limit_seconds for the automatic time limit.
-inline constexpr double kAutomaticTimeLimit = -1;
 /// The automatic time limit, floor + per tet. On TetGen's own tets of the 19 CAD parts of the
 /// shared data, the runs that reach the goal take 0.2-22 µs per tet and at most 2.5 s; those that
 /// cannot reach it gain little after their first seconds (bench/RESULTS.md, "Time budgets"). So

@@ -84,6 +84,7 @@ struct PipelineResult {
   std::optional<TetQualityReport> tet_quality;  ///< of the final tets (improved, when the stage ran)
   std::optional<TetQualityReport> tetgen_quality;  ///< of TetGen's own tets, when the improvement changed them
   std::optional<ImproveResult> improvement;  ///< of `tets`: what the verdict judges
+  bool enhance_stopped_by_time_limit = false;  ///< the enhancement ended at its time limit (its best rounds kept)
   std::optional<SecondOrderRecord> second_order;  ///< tetrahedralize.order 2: the tets made second-order
   std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)
   std::optional<double> extrusion_depth;  ///< an open surface closed into a block: its base's depth

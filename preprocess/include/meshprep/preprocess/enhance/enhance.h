@@ -15,6 +15,7 @@
 /// the deviation bound in either direction, or make the surface cross itself. The rounds stop when
 /// the distribution stops improving; the best is kept.
 
+#include "meshprep/core/deadline.h"
 #include "meshprep/core/mesh.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/preprocess/patches/patches.h"
@@ -31,6 +32,17 @@ namespace meshprep {
 /// lies on its reference (none given, or the input itself) and has more than
 /// EnhanceParams::kRemeshAbove of its faces under the target angle.
 enum class EnhanceRemesh { Auto, On, Off };
+
+/// The automatic time limit, floor + per face (of the input, or of the remeshing's sizing field
+/// when it asks for more). On the 44 parts of the shared data that reach it, the enhancement took
+/// 12-635 us per face (median 265), but on one, cheese (18,000 faces of 0.2-degree slivers, ten
+/// rounds of 1,400 flips each), 1.9-2.3 ms. So 1 ms per face: every part but that one uses at most
+/// 39 % of its limit (the VM's speed drifts up to 2x); the cheese's rounds start up to its limit
+/// (28 s) and its run ends after the round under way (bench/RESULTS.md, "Time budgets").
+inline constexpr double kEnhanceTimeLimitFloorSeconds = 10;
+inline constexpr double kEnhanceTimeLimitPerFaceSeconds = 1e-3;
+/// kEnhanceTimeLimitFloorSeconds + kEnhanceTimeLimitPerFaceSeconds * faces.
+double automatic_enhance_time_limit(std::size_t faces);
 
 struct EnhanceParams {
   std::size_t iterations = 10;          ///< rounds at most (each: statistic, flips, Ceres, projection)
@@ -61,6 +73,12 @@ struct EnhanceParams {
   double tail_weight;                   ///< gamma
   double fidelity_weight;               ///< lambda
   double flip_dihedral_deg;             ///< largest dihedral angle across a flipped edge
+  /// kAutomaticTimeLimit (the default): automatic_enhance_time_limit; 0: none. At the limit (or
+  /// the deadline) no further round starts, and the best so far is kept; a remeshing under way is
+  /// taken back (the input's own faces are enhanced instead, if time is left).
+  double time_limit_seconds = kAutomaticTimeLimit;
+  /// The whole command's deadline (the pipeline gives the enhancement a share of the time left).
+  Deadline deadline;
   std::function<void(double)> progress; ///< called with the fraction done
   EnhanceParams();
 };
@@ -95,10 +113,15 @@ struct EnhanceResult {
   std::size_t faces_before = 0, faces_after = 0;
   QualityTail before, after;
   double seconds = 0;
+  bool stopped_by_time_limit = false;   ///< the time limit or the deadline ended the remeshing or the rounds
   /// The remeshing when it made the surface cross itself or reached its face limit, rounds' edits
   /// that made it cross itself, vertex moves the guards put back, and every round when none gained.
   std::vector<TakenBack> taken_back;
 };
+
+/// \throws InvalidInput "enhance: ..." if a parameter is outside its range (NaN never is inside)
+/// or the time limit is neither -1, 0 nor a positive number of seconds.
+void check_enhance_params(const EnhanceParams& params);
 
 /// Enhance `mesh` in place. `reference` is the surface to stay on (the original mesh); nullptr
 /// means the input itself. \throws InvalidInput if params are out of range or the mesh is empty.
@@ -111,7 +134,7 @@ nlohmann::ordered_json to_json(const QualityTail& tail);
 /// cap_flips, removed_vertices, split_edges, line_vertices, fixed_vertices, undone_moves,
 /// guards_taken_back (json_values.h), remesh, parameters (the
 /// bound used, whether it was automatic, and the settings of `params`), tail_before, tail_after,
-/// time_seconds. The pipeline's stage record picks from it.
+/// time_seconds, stopped ("time limit" or null). The pipeline's stage record picks from it.
 nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams& params);
 
 }  // namespace meshprep
