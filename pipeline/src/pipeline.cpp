@@ -316,31 +316,36 @@ class Run {
                   std::to_string(report.self_intersections) + " self-intersecting face pairs";
     finish(std::move(record));
     if (!config_.tetrahedralize.enabled) return;
-    // What no later stage can mend is refused before any work is done, as bad input (exit 2). Split
-    // vertices first: they open every seam and make touching faces count as crossings, so the
-    // figures would mislead.
+    // What no later stage can mend is refused before any work is done, as bad input (exit 2); after
+    // --repair it is what the repair could not mend (exit 3), and the advice to repair goes.
+    const auto refuse = [&](const std::string& what, const std::string& advice) {
+      if (repaired)
+        throw PipelineFailed(result_.input + ": the repair could not mend the surface: " + what + "; nothing is written");
+      throw InvalidInput(result_.input + ": not FEM-ready: " + what + advice);
+    };
+    // Split vertices first: they open every seam and make touching faces count as crossings, so
+    // the figures would mislead.
     if (report.self_intersections > 0 || !report.closed)
       if (const std::size_t merged = find_coincident_vertices(result_.input_surface).merged)
-        throw InvalidInput(result_.input + ": not FEM-ready: " + std::to_string(merged) +
-                             " vertices lie exactly on another vertex: the file splits its vertices (as VTK's normals "
-                             "filter writes them), so its faces are not connected; weld them first (--repair)");
+        refuse(std::to_string(merged) + " vertices lie exactly on another vertex",
+               ": the file splits its vertices (as VTK's normals filter writes them), so its faces are not connected; "
+               "weld them first (--repair)");
     // Simplification may remove crossings (its collapses merge the crossing faces); if it runs,
     // the final surface's readiness check judges what is left.
     if (report.self_intersections > 0 && !simplifies())
-      throw InvalidInput(result_.input + ": not FEM-ready: the surface intersects itself at " +
-                           std::to_string(report.self_intersections) +
-                           " face pairs (meshprep quality lists them), which the stages that run do not remove "
-                           "(simplification may: give --ratio or --target-faces); repair the surface first (--repair cuts "
-                           "the crossings and keeps the solid's outer surface), or switch tetrahedralize off to process "
-                           "the surface only");
+      refuse("the surface intersects itself at " + std::to_string(report.self_intersections) +
+                 " face pairs (meshprep quality lists them)",
+             ", which the stages that run do not remove (simplification may: give --ratio or --target-faces); repair "
+             "the surface first (--repair cuts the crossings and keeps the solid's outer surface), or switch "
+             "tetrahedralize off to process the surface only");
     if (!report.closed) {
       try {
         extrude_to_block(result_.input_surface, 1);
       } catch (const InvalidInput& e) {
-        throw InvalidInput(result_.input + ": not FEM-ready: the surface is open (" +
-                             std::to_string(report.border_edges) + " border edges) and cannot be closed into a block (" +
-                             e.what() + "); fill its holes first (--repair; repair.max_hole sets the longest rim filled), "
-                             "or switch tetrahedralize off to process the surface only");
+        refuse("the surface is open (" + std::to_string(report.border_edges) +
+                   " border edges) and cannot be closed into a block (" + e.what() + ")",
+               "; fill its holes first (--repair; repair.max_hole sets the longest rim filled), or switch tetrahedralize "
+               "off to process the surface only");
       }
     }
   }
