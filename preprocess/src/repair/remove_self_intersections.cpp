@@ -235,10 +235,10 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
   std::size_t closed_parts = 0;
   for (std::uint32_t v = 0; v < surface.points.size(); ++v) closed_parts += parts.find(v) == v && !open[v];
   if (pairs.empty() && closed_parts <= 1) return pass;
-  std::vector<std::uint32_t> closed_part(surface.triangles.size(), WindingNumber::kNoPart);
-  for (std::size_t f = 0; f < surface.triangles.size(); ++f)
-    if (closed_face(f)) closed_part[f] = parts.find(surface.triangles[f][0]);
-  const WindingNumber winding_number(surface, closed_part);
+  std::vector<std::uint32_t> closed_faces;
+  for (std::uint32_t f = 0; f < surface.triangles.size(); ++f)
+    if (closed_face(f)) closed_faces.push_back(f);
+  const WindingNumber winding_number(surface, std::move(closed_faces));
 
   CutSurface cut = cut_along_intersections(surface, pairs);
   pass.cut_faces = cut.cut_faces;
