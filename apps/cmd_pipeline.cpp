@@ -233,8 +233,9 @@ Action add_pipeline_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_flag("--repair", o->repair,
                 "Repair the input surface first, as meshprep repair does (weld split vertices where edges are open, "
-                "drop degenerate and duplicate faces, split non-manifold edges and vertices, orient, fill holes, cut "
-                "self-intersections and keep the union); a valid closed input is left as it is; off by default");
+                "split faces at T-junctions, drop degenerate and duplicate faces, split non-manifold edges and "
+                "vertices, drop lone faces (fins), orient, fill holes, cut self-intersections and keep the union); "
+                "a valid closed input is left as it is; off by default");
   const ParameterInfo& keep_ratio = simplify_parameters().keep_ratio;
   auto* ratio =
       cmd->add_option(keep_ratio.flag, o->ratio, "Simplify: " + keep_ratio.help)->check(range_check(keep_ratio.range));

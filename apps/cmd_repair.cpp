@@ -44,10 +44,10 @@ Action add_repair_command(CLI::App& app) {
   auto o = std::make_shared<RepairOptions>();
   CLI::App* cmd = app.add_subcommand(
       "repair",
-      "Mend a dirty surface (weld split vertices, drop degenerate and duplicate faces, split non-manifold edges "
-      "and vertices, orient consistently and outward, fill holes: all but an open sheet's outline, or those up to "
-      "--max-hole; cut self-intersections and keep the union's boundary); written only if it is then ready for "
-      "tetrahedralize");
+      "Mend a dirty surface (weld split vertices, split faces at T-junctions, drop degenerate and duplicate "
+      "faces, split non-manifold edges and vertices, drop lone faces (fins), orient consistently and outward, "
+      "fill holes: all but an open sheet's outline, or those up to --max-hole; cut self-intersections and keep "
+      "the union's boundary); written only if it is then ready for tetrahedralize");
   cmd->add_option("input", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output, "Repaired surface (.off .obj .ply .stl)")->required();
   add_parameter(*cmd, repair_parameters().weld_tolerance, o->params.weld_tolerance);

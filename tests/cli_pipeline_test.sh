@@ -263,20 +263,21 @@ one_line "repair, zero-area faces" "collapsed.off: repair: no face is left of 50
 [ ! -e collapsed_repaired.off ] && ok || bad "an empty repair was written"
 "$bin" pipeline collapsed.off -o out_collapsed --repair > /dev/null 2> err.txt; expect_exit "pipeline --repair, zero-area faces" 2 $?
 one_line "pipeline --repair, zero-area faces" "collapsed.off: repair: no face is left of 50"
-# What the repair cannot mend (here a fin: a triangle hanging off a cube's edge) is the repair's
-# failure, exit 3 from `repair` and `pipeline --repair` alike, and the pipeline does not advise
-# --repair when it was given.
+# What the repair cannot mend (here a box without its lid, whose hole --max-hole leaves open) is
+# the repair's failure, exit 3 from `repair` and `pipeline --repair` alike, and the pipeline does
+# not advise --repair when it was given.
 python3 -c "
-P = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)] + [(0.5, -0.5, -0.5)]
-T = [(0, 2, 1), (1, 2, 3), (4, 5, 6), (5, 7, 6), (0, 1, 4), (1, 5, 4), (2, 6, 3), (3, 6, 7), (0, 4, 2), (2, 4, 6),
-     (1, 3, 5), (3, 7, 5), (0, 1, 8)]
-open('fin_cube.off', 'w').write('OFF\n%d %d 0\n' % (len(P), len(T)) + ''.join('%g %g %g\n' % p for p in P) +
-                                ''.join('3 %d %d %d\n' % t for t in T))"
-"$bin" repair fin_cube.off -o fin_repaired.off > /dev/null 2> err.txt; expect_exit "repair, a fin" 3 $?
-[ ! -e fin_repaired.off ] && ok || bad "repair wrote what it could not mend"
-"$bin" pipeline fin_cube.off -o out_fin --repair --quiet > /dev/null 2> err.txt; expect_exit "pipeline --repair, a fin" 3 $?
-one_line "pipeline --repair, a fin" "fin_cube.off: the repair could not mend the surface"
-! grep -q -- "--repair" err.txt && [ ! -e out_fin ] && ok || bad "pipeline --repair on a fin: advice to --repair, or an output"
+P = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+T = [(0, 2, 1), (1, 2, 3), (0, 1, 4), (1, 5, 4), (2, 6, 3), (3, 6, 7), (0, 4, 2), (2, 4, 6), (1, 3, 5), (3, 7, 5)]
+open('cup.off', 'w').write('OFF\\n%d %d 0\\n' % (len(P), len(T)) + ''.join('%g %g %g\\n' % p for p in P) +
+                           ''.join('3 %d %d %d\\n' % t for t in T))"
+"$bin" repair cup.off -o cup_repaired.off --max-hole 0.01 > /dev/null 2> err.txt; expect_exit "repair, a hole left open" 3 $?
+[ ! -e cup_repaired.off ] && ok || bad "repair wrote what it could not mend"
+echo '{"repair": {"max_hole": 0.01}}' > small_holes.json
+"$bin" pipeline cup.off -o out_cup --repair --config small_holes.json --quiet > /dev/null 2> err.txt
+expect_exit "pipeline --repair, a hole left open" 3 $?
+one_line "pipeline --repair, a hole left open" "cup.off: the repair could not mend the surface: the surface is open"
+! grep -q -- "--repair" err.txt && [ ! -e out_cup ] && ok || bad "pipeline --repair on a hole left open: advice to --repair, or an output"
 # Issue 45, item 5: work a guard takes back is said, with its figures, under one key in
 # report.json, in the HTML and on the terminal: the thin wavy plate's remeshing pierces one
 # sheet with the other and is taken back.

@@ -4,8 +4,8 @@
 # contract (0 ready, 1 written but not ready, 2 bad input, 3 what the repair could not mend; never a
 # signal or the time limit); a failure leaves one line naming the case and no output; a run that
 # writes leaves its tets. The kinds the repair mends today (unwelded, flipped, duplicate and
-# internal faces) must stay FEM-ready; the others are the issue's work (bench/RESULTS.md, "Repair
-# suite").
+# internal faces, T-junctions, fins, their mixes) must stay mended, and FEM-ready where the source
+# part allows it; the others are the issue's work (bench/RESULTS.md, "Repair suite").
 # Usage: repair_suite_test.sh MESHPREP SOURCE_DIR
 bin=$1 src=$2
 . "$(dirname "$0")/cli_harness.sh"
@@ -23,6 +23,8 @@ for case in cases/*.off cases/*.stl; do
   esac
   case $kind in
     unwelded | flipped | duplicate | internal) expect_exit "$name, a kind the repair mends" 0 $rc ;;
+    # Mended too, but example004's own edges (9.8 deg) keep its tets under the verdict's 10 deg.
+    tjunction | fin | mixed) { [ $rc = 0 ] || [ $rc = 1 ]; } && ok || bad "$name: exit $rc, the surface not mended" ;;
   esac
 done
 echo "repair_suite: $passed passed, $failed failed"

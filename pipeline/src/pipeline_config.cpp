@@ -147,8 +147,9 @@ Key choice(const char* section, const std::string& name, T& field, Choices<T> ch
 
 std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
   return {flag("repair", "enabled", r.enabled,
-               "weld split vertices, drop degenerate and duplicate faces, split non-manifold edges and vertices, "
-               "orient, fill holes and remove self-intersections in the input before it is checked (meshprep repair)"),
+               "weld split vertices, split faces at T-junctions, drop degenerate and duplicate faces, split "
+               "non-manifold edges and vertices, drop lone faces (fins), orient, fill holes and remove "
+               "self-intersections in the input before it is checked (meshprep repair)"),
           number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance),
           number_or_auto("repair", repair_parameters().max_hole, r.params.max_hole),
           flag("repair", repair_parameters().keep_cavities, r.params.keep_cavities)};

@@ -1,9 +1,11 @@
 #include "meshprep/preprocess/repair/repair.h"
 
+#include "repair/drop_lone_faces.h"
 #include "repair/fill_holes.h"
 #include "repair/orient_components.h"
 #include "repair/remove_self_intersections.h"
 #include "repair/split_nonmanifold.h"
+#include "repair/split_t_junctions.h"
 #include "repair/weld_vertices.h"
 #include "shared/edge_lengths.h"
 
@@ -53,6 +55,7 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.duplicate_faces = weld.duplicate_faces;
   result.unused_vertices = weld.unused_vertices;
   if (surface.triangles.empty()) refuse_empty(input_faces, result);
+  if (!weld.input_closed) result.t_junction_splits = detail::split_t_junctions(surface, result.weld_distance);
   // The steps below walk the same sorted face edges: sorted once, and again only after a step
   // that changed the faces.
   poll();
@@ -61,6 +64,8 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   result.split_edges = split.split_edges;
   result.split_vertices = split.split_vertices;
   if (split.split_vertices > 0) uses = sorted_face_edges(surface);
+  result.dropped_lone_faces = detail::drop_lone_faces(surface, uses);
+  if (result.dropped_lone_faces > 0) uses = sorted_face_edges(surface);
   poll();
   const detail::OrientCounts orient = detail::orient_components(surface, uses);
   result.components = orient.components;

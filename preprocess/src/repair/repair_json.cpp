@@ -12,8 +12,10 @@ nlohmann::ordered_json to_json(const RepairResult& result) {
   json["degenerate_faces"] = result.degenerate_faces;
   json["duplicate_faces"] = result.duplicate_faces;
   json["unused_vertices"] = result.unused_vertices;
+  json["t_junction_splits"] = result.t_junction_splits;
   json["split_edges"] = result.split_edges;
   json["split_vertices"] = result.split_vertices;
+  json["dropped_lone_faces"] = result.dropped_lone_faces;
   json["components"] = result.components;
   json["flipped_faces"] = result.flipped_faces;
   json["inverted_components"] = result.inverted_components;

@@ -124,9 +124,9 @@ TEST(RepairSplit, TwoCubesOnOneEdgeStayTwoClosedCubes) {
 }
 
 // A fin on a cube's edge (three faces on it): the cube's two faces pair across its solid wedge,
-// the fin keeps the edge as a border, and its loop is left open even with no length limit, since
-// a patch would only repeat the fin.
-TEST(RepairSplit, AFinOnACubesEdgeLeavesTheCubeClosed) {
+// which leaves the fin a lone face (no edge shared), and it goes: it encloses nothing and a patch
+// would only repeat it. The cube comes out as it was.
+TEST(RepairSplit, AFinOnACubesEdgeIsDroppedAndTheCubeStaysClosed) {
   TriangleSoup soup = test::cube();
   soup.points.push_back({0.5, -1, 0.5});
   soup.triangles.push_back({0, 1, static_cast<std::uint32_t>(soup.points.size() - 1)});
@@ -134,18 +134,58 @@ TEST(RepairSplit, AFinOnACubesEdgeLeavesTheCubeClosed) {
   params.max_hole = std::numeric_limits<double>::infinity();
   const RepairResult r = repair(soup, params);
   EXPECT_EQ(r.split_edges, 1u);
-  EXPECT_EQ(r.split_vertices, 2u);
-  ASSERT_EQ(r.holes.size(), 1u);
-  EXPECT_FALSE(r.holes[0].filled);
-  EXPECT_NE(r.holes[0].left_open.find("lone face"), std::string::npos) << r.holes[0].left_open;
-  EXPECT_EQ(soup.triangles.size(), 13u);
+  EXPECT_EQ(r.dropped_lone_faces, 1u);
+  EXPECT_TRUE(r.holes.empty());
+  EXPECT_EQ(soup.triangles.size(), 12u);
+  EXPECT_EQ(soup.points.size(), 8u);  // the edge's copies the split gave the fin went with it
   const Topology t = analyze_topology(soup);
-  EXPECT_TRUE(t.manifold && t.oriented);
-  EXPECT_EQ(t.components, 2u);
-  EXPECT_EQ(t.boundary_loops, 1u);
-  // The cube's two copies at the fin's edge are held apart from the fin's (as above).
-  EXPECT_NEAR(signed_volume(TriangleSoup{soup.points, {soup.triangles.begin(), soup.triangles.end() - 1}}), 1.0,
-              2 * 1e-3 * 1.5 / 3);
+  EXPECT_TRUE(t.closed && t.manifold && t.oriented);
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_NEAR(signed_volume(soup), 1.0, 1e-12);
+}
+
+// A lone face that is all there is stays: a one-face sheet.
+TEST(RepairSplit, ALoneFaceThatIsAllThereIsStays) {
+  TriangleSoup soup;
+  soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  soup.triangles = {{0, 1, 2}};
+  const RepairResult r = repair(soup);
+  EXPECT_EQ(r.dropped_lone_faces, 0u);
+  EXPECT_EQ(soup.triangles.size(), 1u);
+}
+
+// T-junctions: one face on a cube's edge refined at k points of the edge (a fan from its opposite
+// vertex), its neighbour across the edge not. The neighbour is split at each point, the seam is
+// closed and the cube's volume exact (no point moves).
+TEST(RepairTJunctions, AFaceRefinedOnOneSideOfAnEdgeIsMatchedOnTheOther) {
+  for (const int k : {1, 2, 3}) {
+    TriangleSoup soup = test::cube(2);
+    const auto on_edge = std::find_if(soup.triangles.begin(), soup.triangles.end(), [](const Triangle& t) {
+      return std::count(t.begin(), t.end(), 0u) + std::count(t.begin(), t.end(), 1u) == 2;
+    });
+    ASSERT_NE(on_edge, soup.triangles.end());
+    // The face in the order from -> to -> opposite, its edge from 0 to 1 or from 1 to 0.
+    Triangle t = *on_edge;
+    while (!((t[0] == 0 && t[1] == 1) || (t[0] == 1 && t[1] == 0))) t = {t[1], t[2], t[0]};
+    soup.triangles.erase(on_edge);
+    std::uint32_t previous = t[0];
+    for (int i = 1; i <= k; ++i) {
+      soup.points.push_back(soup.points[t[0]] + (soup.points[t[1]] - soup.points[t[0]]) * (double(i) / (k + 1)));
+      const auto m = static_cast<std::uint32_t>(soup.points.size() - 1);
+      soup.triangles.push_back({previous, m, t[2]});
+      previous = m;
+    }
+    soup.triangles.push_back({previous, t[1], t[2]});
+    ASSERT_FALSE(analyze_topology(soup).closed);
+    const RepairResult r = repair(soup);
+    EXPECT_EQ(r.t_junction_splits, static_cast<std::size_t>(k)) << k;
+    EXPECT_EQ(r.filled_holes + r.open_holes, 0u) << k;
+    EXPECT_EQ(soup.triangles.size(), 12u + 2 * k) << k;
+    const Topology topology = analyze_topology(soup);
+    EXPECT_TRUE(topology.closed && topology.manifold && topology.oriented) << k;
+    EXPECT_EQ(find_self_intersections(soup).count, 0u) << k;
+    EXPECT_NEAR(signed_volume(soup), 8.0, 1e-12) << k;
+  }
 }
 
 // Every point the patch adds is an average of points at z = 0 (centroids, then the fairing's

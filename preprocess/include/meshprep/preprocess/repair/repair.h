@@ -5,6 +5,8 @@
 ///    alone uses) closer than weld_tolerance x the median edge length too (the lowest index of each
 ///    cluster, where it is: welding never moves a vertex). A closed input is welded at its exact
 ///    copies only: a thin wall is never welded shut, a valid part comes out as it went in;
+///    Then T-junctions: a vertex of an open edge lying on another open edge (within the same
+///    distance) splits that edge's face there, so that both sides of the seam share it;
 /// 2. faces that name a vertex twice after welding, and faces repeating another's three vertices,
 ///    are removed (every copy when they face both ways and their edges have two other faces each: the
 ///    wall two solids share; a part written double-sided keeps one copy of each face); vertices no
@@ -13,6 +15,8 @@
 ///    vertices; the faces on an edge with more than two are paired by their angles around it, so
 ///    two boxes touching along an edge stay two closed boxes (a bow-tie on a hole's rim is joined
 ///    again by the hole's patch, step 5);
+///    Then faces no other face shares an edge with (a fin the split took off a solid's edge, a
+///    stray triangle) are removed, unless they are all there is: they enclose nothing;
 /// 4. orientation: each edge-connected component is made consistent from its first face, across
 ///    its manifold edges, and a closed component enclosing negative volume is turned outward;
 /// 5. holes: each boundary loop is filled after Liepa 2003 (a minimum-dihedral, then minimum-area
@@ -83,10 +87,12 @@ struct RepairResult {
   /// Removed: another face's three vertices (every copy when they are a wall two solids share).
   std::size_t duplicate_faces = 0;
   std::size_t unused_vertices = 0;      ///< dropped: no face uses them
+  std::size_t t_junction_splits = 0;    ///< faces split at a vertex of the seam's other side
   /// Non-manifold edges (more than two faces) and vertices (bow-ties, split edges' ends) given a
   /// copy per sheet and still split at the end: a bow-tie on a hole's rim whose fans the hole's
   /// patch joins is one vertex again.
   std::size_t split_edges = 0, split_vertices = 0;
+  std::size_t dropped_lone_faces = 0;   ///< faces sharing no edge with another (fins, strays), removed
   std::size_t flipped_faces = 0;        ///< turned to agree with their component's first face
   std::size_t inverted_components = 0;  ///< closed components turned outward (every face flipped)
   std::size_t components = 0;           ///< edge-connected components
