@@ -402,7 +402,8 @@ void check_improve_params(const ImproveParams& p) {
 }
 
 double automatic_improve_time_limit(std::size_t tets) {
-  return kAutomaticTimeLimitFloorSeconds + kAutomaticTimeLimitPerTetSeconds * static_cast<double>(tets);
+  return kAutomaticTimeLimitScale *
+         (kAutomaticTimeLimitFloorSeconds + kAutomaticTimeLimitPerTetSeconds * static_cast<double>(tets));
 }
 
 ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {

@@ -186,7 +186,8 @@ void check_enhance_params(const EnhanceParams& params) {
 }
 
 double automatic_enhance_time_limit(std::size_t faces) {
-  return kEnhanceTimeLimitFloorSeconds + kEnhanceTimeLimitPerFaceSeconds * static_cast<double>(faces);
+  return kAutomaticTimeLimitScale *
+         (kEnhanceTimeLimitFloorSeconds + kEnhanceTimeLimitPerFaceSeconds * static_cast<double>(faces));
 }
 
 EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const EnhanceParams& params) {

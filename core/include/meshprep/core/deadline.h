@@ -13,6 +13,13 @@ namespace meshprep {
 /// A step's own time limit (ImproveParams, EnhanceParams) set to this: the step's automatic limit,
 /// which grows with the mesh (each step states its rule); 0: none.
 inline constexpr double kAutomaticTimeLimit = -1;
+/// The automatic limits' rules are measured on an optimised build; an instrumented one (CI's
+/// sanitizer build, CMakeLists.txt) stretches them by its slowdown, so that its results are a
+/// Release build's.
+#ifndef MESHPREP_AUTOMATIC_TIME_LIMIT_SCALE
+#define MESHPREP_AUTOMATIC_TIME_LIMIT_SCALE 1
+#endif
+inline constexpr double kAutomaticTimeLimitScale = MESHPREP_AUTOMATIC_TIME_LIMIT_SCALE;
 
 class Deadline {
  public:

@@ -50,7 +50,7 @@ namespace meshprep {
 /// of four times the longest, for the small meshes whose runs cannot reach the goal.
 inline constexpr double kAutomaticTimeLimitFloorSeconds = 10;
 inline constexpr double kAutomaticTimeLimitPerTetSeconds = 50e-6;
-/// kAutomaticTimeLimitFloorSeconds + kAutomaticTimeLimitPerTetSeconds * tets.
+/// kAutomaticTimeLimitFloorSeconds + kAutomaticTimeLimitPerTetSeconds * tets (times kAutomaticTimeLimitScale).
 double automatic_improve_time_limit(std::size_t tets);
 
 struct ImproveParams {

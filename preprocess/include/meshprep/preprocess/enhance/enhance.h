@@ -41,7 +41,7 @@ enum class EnhanceRemesh { Auto, On, Off };
 /// (28 s) and its run ends after the round under way (bench/RESULTS.md, "Time budgets").
 inline constexpr double kEnhanceTimeLimitFloorSeconds = 10;
 inline constexpr double kEnhanceTimeLimitPerFaceSeconds = 1e-3;
-/// kEnhanceTimeLimitFloorSeconds + kEnhanceTimeLimitPerFaceSeconds * faces.
+/// kEnhanceTimeLimitFloorSeconds + kEnhanceTimeLimitPerFaceSeconds * faces (times kAutomaticTimeLimitScale).
 double automatic_enhance_time_limit(std::size_t faces);
 
 struct EnhanceParams {
