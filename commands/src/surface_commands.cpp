@@ -76,7 +76,8 @@ std::string repair_summary(const RepairResult& r) {
          " degenerate and " + std::to_string(r.duplicate_faces) + " duplicate faces, split " +
          std::to_string(r.t_junction_splits) + " faces at T-junctions, split " +
          std::to_string(r.split_edges) + " non-manifold edges and " + std::to_string(r.split_vertices) +
-         " vertices, dropped " + std::to_string(r.dropped_lone_faces) + " lone faces, flipped " + std::to_string(r.flipped_faces) + " faces, turned " +
+         " vertices, dropped " + std::to_string(r.dropped_lone_faces) + " lone faces, flipped " +
+         std::to_string(r.flipped_faces) + " faces, turned " +
          std::to_string(r.inverted_components) + " components outward, filled " + std::to_string(r.filled_holes) +
          " holes (" + std::to_string(r.open_holes) + " left open), cut " + std::to_string(r.cut_faces) + " faces along " +
          std::to_string(r.intersecting_pairs) + " intersecting pairs and removed " + std::to_string(r.removed_faces) +

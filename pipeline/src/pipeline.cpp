@@ -265,8 +265,8 @@ class Run {
     report = analyze_quality(loaded.soup, stage_params_);
     fill_shape(record, report);
     record.details = picked(to_json(r), {"input_closed", "welded_vertices", "degenerate_faces", "duplicate_faces",
-                                         "t_junction_splits", "split_edges", "split_vertices", "dropped_lone_faces", "flipped_faces",
-                                         "inverted_components", "filled_holes",
+                                         "t_junction_splits", "split_edges", "split_vertices", "dropped_lone_faces",
+                                         "flipped_faces", "inverted_components", "filled_holes",
                                          "open_holes", "holes", "intersecting_pairs", "cut_faces", "removed_faces",
                                          "nested_components", "cavities", "separated_pinches"});
     record.note = std::to_string(r.welded_vertices) + " vertices welded, " +

@@ -219,34 +219,40 @@ WeldCounts weld_vertices(TriangleSoup& soup, double distance, WeldScope scope) {
       if (wall) removed[first] = 1, ++counts.duplicate_faces;
     }
   }
-  std::size_t kept = 0;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    if (!removed[f]) {
-      if (!patches.empty()) patches[kept] = patches[f];
-      faces[kept++] = faces[f];
-    }
-  faces.resize(kept);
-  if (!patches.empty()) patches.resize(kept);
-
-  // The vertices kept in their order in the input: a surface without anything to weld or remove
-  // comes out as it went in, numbering included.
-  std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
-  for (const Triangle& t : faces)
-    for (const std::uint32_t v : t) renumber[v] = 0;
-  std::vector<Vec3> points;
-  points.reserve(soup.points.size());  // all of them, on a clean surface
-  for (std::size_t v = 0; v < soup.points.size(); ++v)
-    if (renumber[v] != UINT32_MAX) {
-      renumber[v] = static_cast<std::uint32_t>(points.size());
-      points.push_back(soup.points[v]);
-    }
-  for (Triangle& t : faces)
-    for (std::uint32_t& v : t) v = renumber[v];
-  counts.unused_vertices = soup.points.size() - points.size() - counts.welded_vertices;
-  soup.points = std::move(points);
   soup.triangles = std::move(faces);
   soup.patches = std::move(patches);
+  remove_faces(soup, removed);
+  // The welded vertices are unused now too: they are counted apart.
+  counts.unused_vertices = drop_unused_vertices(soup) - counts.welded_vertices;
   return counts;
+}
+
+void remove_faces(TriangleSoup& soup, const std::vector<char>& removed) {
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    if (!removed[f]) {
+      if (!soup.patches.empty()) soup.patches[kept] = soup.patches[f];
+      soup.triangles[kept++] = soup.triangles[f];
+    }
+  soup.triangles.resize(kept);
+  if (!soup.patches.empty()) soup.patches.resize(kept);
+}
+
+std::size_t drop_unused_vertices(TriangleSoup& soup) {
+  std::vector<std::uint32_t> renumber(soup.points.size(), UINT32_MAX);
+  for (const Triangle& t : soup.triangles)
+    for (const std::uint32_t v : t) renumber[v] = 0;
+  std::size_t used = 0;
+  for (std::size_t v = 0; v < soup.points.size(); ++v)
+    if (renumber[v] != UINT32_MAX) {
+      renumber[v] = static_cast<std::uint32_t>(used);
+      soup.points[used++] = soup.points[v];
+    }
+  const std::size_t dropped = soup.points.size() - used;
+  soup.points.resize(used);
+  for (Triangle& t : soup.triangles)
+    for (std::uint32_t& v : t) v = renumber[v];
+  return dropped;
 }
 
 }  // namespace meshprep::detail

@@ -4,6 +4,7 @@
 #include "meshprep/core/mesh.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace meshprep::detail {
 
@@ -26,5 +27,12 @@ enum class WeldScope { everywhere, open_edges };
 /// share; of a part written double-sided, the first copy of each face stays), and drops the
 /// vertices no face uses.
 WeldCounts weld_vertices(TriangleSoup& soup, double distance, WeldScope scope = WeldScope::everywhere);
+
+/// Removes the faces `removed` flags (one flag per face), their patches with them.
+void remove_faces(TriangleSoup& soup, const std::vector<char>& removed);
+
+/// Drops the vertices no face uses; the others keep their order (a surface with none comes out as
+/// it went in, numbering included). Returns how many were dropped.
+std::size_t drop_unused_vertices(TriangleSoup& soup);
 
 }  // namespace meshprep::detail

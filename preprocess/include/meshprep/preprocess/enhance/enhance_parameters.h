@@ -9,7 +9,8 @@
 namespace meshprep {
 
 struct EnhanceParameters {
-  ParameterInfo iterations, max_deviation, target_min_angle_deg, feature_angle_deg, flips, remesh, max_faces, time_limit_seconds;
+  ParameterInfo iterations, max_deviation, target_min_angle_deg, feature_angle_deg, flips, remesh, max_faces,
+      time_limit_seconds;
 };
 
 const EnhanceParameters& enhance_parameters();
