@@ -49,7 +49,7 @@ assert checks["max_dihedral_deg"]["value"] == q["max_dihedral_deg"]["max"] and c
 assert j["fem_ready"] == all(c["ok"] for c in checks.values()), j["fem_ready"]
 assert len(j["problems"]) == sum(not c["ok"] for c in checks.values()), j["problems"]
 assert len(q["worst_tets"]) == 10 and len(q["worst_tets"][0]["centre"]) == 3
-assert [s["name"] for s in j["stages"]] == ["check", "patches", "simplify", "smooth", "enhance", "quality", "tetrahedralize", "improve"]
+assert [s["name"] for s in j["stages"]] == ["check", "patches", "simplify", "smooth", "enhance", "knife_edges", "quality", "tetrahedralize", "improve"]
 # TetGen's tets beside the improved ones; the same boundary, so the same volume.
 g, i = j["tets"]["tetgen_quality"], j["tets"]["improvement"]
 assert g["min_dihedral_deg"]["min"] < 10 <= q["min_dihedral_deg"]["min"], (g["min_dihedral_deg"], q["min_dihedral_deg"])

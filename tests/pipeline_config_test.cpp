@@ -104,8 +104,8 @@ TEST(PipelineConfig, RepairIsOffByDefaultAndReadsItsTolerance) {
 
 TEST(PipelineConfig, UnknownSectionsAndKeysNameTheValidOnes) {
   EXPECT_EQ(error_of(Json::parse(R"({"simplfy": {}})")),
-            "c.json: unknown section 'simplfy'; valid sections: repair, reconstruct, patches, simplify, smooth, enhance, quality, "
-            "tetrahedralize, improve, verdict");
+            "c.json: unknown section 'simplfy'; valid sections: repair, reconstruct, patches, simplify, smooth, enhance, "
+            "knife_edges, quality, tetrahedralize, improve, verdict");
   const std::string key = error_of(Json::parse(R"({"simplify": {"ratoi": 0.5}})"));
   EXPECT_EQ(key.rfind("c.json: unknown key 'simplify.ratoi'; valid keys of simplify: enabled, ratio, target_faces", 0), 0u)
       << key;

@@ -100,8 +100,8 @@ TEST_F(Pipeline, AClosedSurfaceBecomesTetsThatFillItsVolume) {
   config.simplify.ratio = 0.5;
   const PipelineResult r = run_pipeline(mesh_file(test::icosphere(3), "sphere.off"), config);
   EXPECT_EQ(stage_names(r),
-            (std::vector<std::string>{"check", "patches", "simplify", "smooth", "enhance", "quality", "tetrahedralize",
-                                      "improve"}));
+            (std::vector<std::string>{"check", "patches", "simplify", "smooth", "enhance", "knife_edges", "quality",
+                                      "tetrahedralize", "improve"}));
   EXPECT_FALSE(r.from_points);
   EXPECT_TRUE(r.stages[2].ran);
   EXPECT_FALSE(r.stages[3].ran);  // smoothing is off by default
@@ -164,7 +164,7 @@ TEST_F(Pipeline, PointsBecomeATerrainClosedIntoABlock) {
   config.tetrahedralize.keep_surface = true;  // not the default for a block: its walls are thin
   const PipelineResult r = run_pipeline(terrain_points(), config);
   EXPECT_EQ(stage_names(r), (std::vector<std::string>{"reconstruct", "patches", "simplify", "smooth", "enhance",
-                                                      "quality", "tetrahedralize", "improve"}));
+                                                      "knife_edges", "quality", "tetrahedralize", "improve"}));
   EXPECT_TRUE(r.from_points);
   EXPECT_EQ(r.input_points, 1500u);
   // The automatic ratio for a terrain keeps 7 % of the faces.
@@ -283,7 +283,7 @@ TEST_F(Pipeline, TheOutputFolderHoldsOneRunsFilesAndReplays) {
   EXPECT_EQ(summary["thresholds"][0]["check"], "min_dihedral_deg");
   EXPECT_EQ(summary["thresholds"][0]["value"], r.tet_quality->min_dihedral_deg.min);
   EXPECT_EQ(summary["tets"]["tet_quality"]["worst_tets"].size(), kDefaultWorstTets);
-  EXPECT_EQ(summary["stages"].size(), 8u);
+  EXPECT_EQ(summary["stages"].size(), 9u);
   // TetGen's tets beside the improved ones, and what the improvement did.
   EXPECT_EQ(summary["tets"]["tetgen_quality"]["tetrahedra"], r.tetgen_quality->tetrahedra);
   EXPECT_EQ(summary["tets"]["improvement"]["stopped_by"], r.improvement->stopped_by);
@@ -398,6 +398,34 @@ TEST_F(Pipeline, AStagingFolderNobodyHoldsIsRemovedByTheNextRun) {
   ::close(live);
 }
 
+// A cap on a cube's edge (an angle of 180 - 0.016 degrees) caps the tets on it; with the
+// enhancement off (it flips caps too), the knife_edges stage flips it away within the fidelity
+// bound, lists it, and the tets meet the verdict.
+TEST_F(Pipeline, TheKnifeEdgesStageOpensACapWithinTheBound) {
+  PipelineConfig config = small_config();
+  config.enhance.enabled = false;
+  const double bulge = 1e-4;
+  const PipelineResult r = run_pipeline(mesh_file(test::cube_with_cap(bulge), "capped.off"), config);
+  ASSERT_TRUE(r.knife_edges);
+  const KnifeEdgeResult& k = *r.knife_edges;
+  ASSERT_FALSE(k.edits.empty());
+  EXPECT_STREQ(k.edits.front().kind, "cap");
+  EXPECT_EQ(k.knife_edges_after, 0u);
+  EXPECT_LE(k.max_displacement, config.enhance.params.max_deviation.value() * r.input_quality.bbox_diagonal);
+  const StageRecord& stage = r.stages[5];
+  ASSERT_EQ(stage.name, "knife_edges");
+  EXPECT_EQ(stage.details["edits"].size(), k.edits.size());
+  ASSERT_TRUE(r.final_quality.reference);
+  EXPECT_LE(r.final_quality.reference->hausdorff_relative, 1.01 * bulge / r.input_quality.bbox_diagonal);
+  EXPECT_TRUE(r.fem.ready) << (r.fem.problems.empty() ? "" : r.fem.problems.front());
+
+  config.knife_edges.enabled = false;  // without it the cap stays, and so does its limit
+  const PipelineResult kept = run_pipeline(mesh_file(test::cube_with_cap(bulge), "capped.off"), config);
+  EXPECT_FALSE(kept.knife_edges);
+  EXPECT_EQ(kept.final_quality.faces, r.input_quality.faces);
+  EXPECT_FALSE(kept.fem.ready);
+}
+
 TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {
   PipelineConfig config = small_config();
   config.tetrahedralize.enabled = false;
@@ -407,8 +435,8 @@ TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {
   observer.stage_finished = [&](const StageRecord& s) { finished.push_back(s.name); };
   run_pipeline(mesh_file(test::icosphere(2), "sphere.off"), config, observer);
   EXPECT_EQ(started, (std::vector<std::string>{"check", "patches", "enhance", "quality"}));  // the others are skipped
-  EXPECT_EQ(finished, (std::vector<std::string>{"check", "patches", "simplify", "smooth", "enhance", "quality",
-                                                "tetrahedralize", "improve"}));
+  EXPECT_EQ(finished, (std::vector<std::string>{"check", "patches", "simplify", "smooth", "enhance", "knife_edges",
+                                                "quality", "tetrahedralize", "improve"}));
 }
 
 }  // namespace

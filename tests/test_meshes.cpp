@@ -109,6 +109,18 @@ TriangleSoup cylinder_with_fan_caps(int corners) {
   return s;
 }
 
+TriangleSoup cube_with_cap(double bulge) {
+  TriangleSoup soup;
+  soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1},
+                 Vec3(0.5, -bulge / std::sqrt(2.0), 1 + bulge / std::sqrt(2.0))};
+  soup.triangles = {{0, 2, 1}, {0, 3, 2},             // bottom
+                    {0, 1, 8}, {0, 8, 4}, {1, 5, 8},  // front, fanned from the new vertex 8
+                    {4, 8, 5},                        // the cap on the edge
+                    {4, 5, 6}, {4, 6, 7},             // top
+                    {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  return soup;
+}
+
 TriangleSoup translated(TriangleSoup soup, const Vec3& t) {
   for (auto& p : soup.points) p += t;
   return soup;

@@ -37,6 +37,11 @@ TriangleSoup cylinder_with_fan_caps(int corners);
 /// smaller than their sagitta.
 TriangleSoup thin_wavy_plate(int n, double gap);
 
+/// The unit cube whose top front edge (0,0,1)-(1,0,1) is split at its middle by a vertex pushed
+/// `bulge` out along the diagonal (0, -1, 1): the face between that vertex and the edge's ends is a
+/// cap, its angle at the vertex 180 degrees less about 4 bulge / sqrt 2 radians. Closed, outward.
+TriangleSoup cube_with_cap(double bulge);
+
 /// `soup` translated by t.
 TriangleSoup translated(TriangleSoup soup, const Vec3& t);
 

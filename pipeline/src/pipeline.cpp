@@ -75,6 +75,7 @@ class Run {
       simplify_stage();
       smooth_stage();
       enhance_stage();
+      knife_edges_stage();
       quality_stage();
       tetrahedralize_stage();
       improve_stage();
@@ -431,6 +432,40 @@ class Run {
     record.note = std::to_string(e.kept_round) + " round(s) kept, " + std::to_string(e.flips) + " flips";
     if (e.cap_flips > 0) record.note += ", " + std::to_string(e.cap_flips) + " cap(s) flipped";
     record.taken_back = e.taken_back;
+    measure(record);
+    finish(std::move(record));
+  }
+
+  // Where the final surface itself caps the tets below the improvement's goal (a thin wedge at an
+  // edge), a local edit within the fidelity bound opens it (knife_edges.h); before the quality
+  // stage, so that the final surface's distance from the input counts it.
+  void knife_edges_stage() {
+    if (!config_.knife_edges.enabled) return skip("knife_edges", "switched off");
+    if (!config_.tetrahedralize.enabled) return skip("knife_edges", "no tets to make");
+    for (const auto h : mesh_.halfedges())
+      if (mesh_.is_boundary(h)) return skip("knife_edges", "the surface is open (a terrain's block has no knife edge of its own)");
+    StageRecord record = started("knife_edges");
+    KnifeEdgeParams params;
+    params.goal_min_dihedral_deg = config_.improve.params.goal_min_dihedral_deg;
+    params.goal_max_dihedral_deg = config_.improve.params.goal_max_dihedral_deg;
+    params.max_deviation = config_.enhance.params.max_deviation.value_or(EnhanceParams::kLargestAutoDeviation) *
+                           result_.input_quality.bbox_diagonal;
+    const KnifeEdgeResult r = open_knife_edges(mesh_, result_.input_surface, params);
+    record.seconds = r.seconds;
+    record.details = to_json(r);
+    const double diagonal = result_.input_quality.bbox_diagonal;
+    if (r.knife_edges_before == 0) {
+      record.note = "none: no edge or face of the surface caps the tets below " + figure(params.goal_min_dihedral_deg) + " deg";
+    } else {
+      const std::size_t flips = static_cast<std::size_t>(std::count_if(
+          r.edits.begin(), r.edits.end(), [](const KnifeEdgePlace& e) { return std::string(e.edit) == "flip"; }));
+      record.note = std::to_string(flips) + " flip(s), " + std::to_string(r.edits.size() - flips) +
+                    " collapse(s), the largest move " + figure(r.max_displacement / diagonal) +
+                    " of the diagonal; knife edges, caps and short edges " + std::to_string(r.knife_edges_before) +
+                    " -> " + std::to_string(r.knife_edges_after) + ", the surface's bound " +
+                    figure(r.surface_bound_before_deg) + " -> " + figure(r.surface_bound_after_deg) + " deg";
+    }
+    result_.knife_edges = r;
     measure(record);
     finish(std::move(record));
   }

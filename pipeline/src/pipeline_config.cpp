@@ -343,6 +343,12 @@ std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
   return keys;
 }
 
+std::vector<Key> knife_edges_keys(PipelineConfig::KnifeEdges& k) {
+  return {flag("knife_edges", "enabled", k.enabled,
+               "open the surface's knife edges and caps that hold the tets below improve.goal_min_dihedral_deg "
+               "(flips and collapses, each within enhance.max_deviation of the input, listed in the report)")};
+}
+
 std::vector<Key> verdict_keys(TetThresholds& t) {
   const VerdictParameters& info = verdict_parameters();
   return {number("verdict", info.min_dihedral_deg, t.min_dihedral_deg),
@@ -354,7 +360,7 @@ std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c
   return {{"repair", repair_keys(c.repair)},           {"reconstruct", reconstruct_keys(c.reconstruct)},
           {"patches", patches_keys(c.patches)},             {"simplify", simplify_keys(c.simplify)},
           {"smooth", smooth_keys(c.smooth)},                {"enhance", enhance_keys(c.enhance)},
-          {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
+          {"knife_edges", knife_edges_keys(c.knife_edges)}, {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
           {"improve", improve_keys(c.improve)},             {"verdict", verdict_keys(c.verdict)}};
 }
 

@@ -187,6 +187,30 @@ std::string improvement_tables(const PipelineResult& r) {
   return out + "</table>\n";
 }
 
+// Where the knife_edges stage changed the surface so that the tets can reach the goal, and what it
+// left (knife_edges.h): each place with its figures, the displacement as a share of the diagonal.
+std::string knife_edge_table(const PipelineResult& r) {
+  if (!r.knife_edges || (r.knife_edges->edits.empty() && r.knife_edges->left.empty())) return {};
+  const KnifeEdgeResult& k = *r.knife_edges;
+  const double diagonal = r.input_quality.bbox_diagonal;
+  std::string out = "<table>\n<caption>Knife edges and caps: " + std::to_string(k.edits.size()) +
+                    " opened before the tets were made, " + std::to_string(k.left.size()) +
+                    " left (no edit within the fidelity bound opened them)</caption>\n" +
+                    row({"", "kind", "x", "y", "z", "angle", "bound before", "bound after", "moved / diagonal"}, "th");
+  const auto add = [&](const KnifeEdgePlace& p, bool edit) {
+    out += "<tr><td>" + escape(edit ? p.edit : "left") + "</td>";
+    for (const std::string& cell :
+         {std::string(p.kind), format_number(p.place.x(), 6), format_number(p.place.y(), 6), format_number(p.place.z(), 6),
+          degrees(p.interior_angle_before_deg), degrees(p.bound_before_deg),
+          edit ? degrees(p.bound_after_deg) : std::string(), edit ? figure(p.displacement / diagonal) : std::string()})
+      out += "<td class=\"num\">" + escape(cell) + "</td>";
+    out += "</tr>\n";
+  };
+  for (std::size_t i = 0; i < k.edits.size() && i < 20; ++i) add(k.edits[i], true);
+  for (std::size_t i = 0; i < k.left.size() && i < 10; ++i) add(k.left[i], false);
+  return out + "</table>\n";
+}
+
 // Per-tet histograms share a log count axis: the few tets that decide the verdict show beside
 // the bulk.
 html::HistogramOptions tet_histogram(const std::string& title, const std::string& x_label, double lo, double hi) {
@@ -216,7 +240,7 @@ std::string tet_section(const PipelineResult& r, const PipelineConfig& config) {
   out += row({"aspect ratio p95 / max", figure(q.aspect_ratio.p95) + " / " + figure(q.aspect_ratio.max)});
   out += row({"TetGen switches", r.tetgen_switches});
   out += row({"file", "tets." + config.tetrahedralize.format});
-  out += "</table>\n" + threshold_table(r) + "</div>\n<div class=\"tables\">\n" + improvement_tables(r) +
+  out += "</table>\n" + threshold_table(r) + "</div>\n<div class=\"tables\">\n" + improvement_tables(r) + knife_edge_table(r) +
          "</div>\n<div class=\"tables\">\n" + worst_tets_table(q) + "</div>\n<div class=\"histograms\">\n";
   html::HistogramOptions dihedral = tet_histogram("Smallest dihedral angle per tet", "degrees", 0, 90);
   dihedral.bins = 45;

@@ -107,7 +107,7 @@ const Keywords kQuality{"quality", "quality", {}, {}};
 const Keywords kTetrahedralize{
     "tetrahedralize", "tetrahedralize", {"improve", "verdict", "patches"}, {"enabled", "format", "msh_version", "binary", "ascii"}};
 const Keywords kImprove{"improve", "improve", {"verdict"}, {"enabled"}};
-const Keywords kPipeline{"pipeline", "", {"repair", "reconstruct", "patches", "simplify", "smooth", "enhance", "quality",
+const Keywords kPipeline{"pipeline", "", {"repair", "reconstruct", "patches", "simplify", "smooth", "enhance", "knife_edges", "quality",
                                           "tetrahedralize", "improve", "verdict"}, {}};
 
 // The configuration whose sections hold the standalone commands' defaults (the pipeline's differ:

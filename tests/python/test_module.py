@@ -254,6 +254,21 @@ def test_pipeline_on_a_surface_in_memory_gives_the_files_figures():
     np.testing.assert_array_equal(outcomes[1].tets.tets, outcomes[0].tets.tets)
 
 
+def test_pipeline_takes_the_knife_edges_section_as_the_config_file_does():
+    source = DATA / "example004.stl"
+    for given, ran in ((False, False), ({"enabled": True}, True)):
+        try:
+            result = meshprep.pipeline(source, knife_edges=given, improve=False)
+        except meshprep.NotReadyError as e:
+            result = e.result
+        stage = next(s for s in result.report["stages"] if s["name"] == "knife_edges")
+        assert stage["ran"] == ran
+        if ran:
+            details = stage["details"]
+            assert details["knife_edges_after"] <= details["knife_edges_before"]
+            assert len(details["left"]) == details["knife_edges_after"]
+
+
 def test_progress_reaches_the_callback_and_can_stop_the_work():
     surface = meshprep.read(DATA / "handle.off")
     seen = []

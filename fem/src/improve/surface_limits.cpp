@@ -33,25 +33,21 @@ struct BoundaryEdge {
 };
 
 // The tet joining a face oriented out of the solid, (x, y, z), to an inner point: (x, z, y, point).
-OneFreeCornerTet on_face(const TetComplex& mesh, const std::array<VertexId, 3>& f) {
-  return {{mesh.point(f[0]), mesh.point(f[2]), mesh.point(f[1])}};
-}
+OneFreeCornerTet on_face(const std::array<Vec3, 3>& f) { return {{f[0], f[2], f[1]}}; }
 
 // With only its smallest dihedral angle counted: the objective with obtuse angles never the worst.
 constexpr double kAcuteOnly = 1e300;
 
-// The best smallest dihedral angle of two tets splitting the wedge at edge (u, v): its two boundary
-// faces joined to one point X inside it, (face 0, X) and (face 1, X), X placed by the same
-// maximiser as the smoothing from two starts inside the wedge (the maximum found, not a proven one).
-double best_two_tet_split(const TetComplex& mesh, const BoundaryEdge& edge, VertexId u, VertexId v) {
-  const std::vector<OneFreeCornerTet> tets = {on_face(mesh, edge.face[0]), on_face(mesh, edge.face[1])};
-  const Vec3 &pu = mesh.point(u), &pv = mesh.point(v);
-  const double length = (pv - pu).norm();
-  const auto inward = [&](const std::array<VertexId, 3>& f) {
-    return -Vec3((mesh.point(f[1]) - mesh.point(f[0])).cross(mesh.point(f[2]) - mesh.point(f[0]))).normalized();
-  };
-  const Vec3 starts[2] = {0.25 * (pu + pv + mesh.point(edge.apex[0]) + mesh.point(edge.apex[1])),
-                          0.5 * (pu + pv) + 0.25 * length * (inward(edge.face[0]) + inward(edge.face[1])).normalized()};
+// The best smallest dihedral angle of two tets splitting the wedge: its two boundary faces joined
+// to one point X inside it, (face 0, X) and (face 1, X), X placed by the same maximiser as the
+// smoothing from two starts inside the wedge (the maximum found, not a proven one).
+double best_two_tet_split(const BoundaryWedge& w) {
+  const std::array<Vec3, 3> faces[2] = {{w.u, w.v, w.apex[0]}, {w.v, w.u, w.apex[1]}};
+  const std::vector<OneFreeCornerTet> tets = {on_face(faces[0]), on_face(faces[1])};
+  const double length = (w.v - w.u).norm();
+  const auto inward = [](const std::array<Vec3, 3>& f) { return -Vec3((f[1] - f[0]).cross(f[2] - f[0])).normalized(); };
+  const Vec3 starts[2] = {0.25 * (w.u + w.v + w.apex[0] + w.apex[1]),
+                          0.5 * (w.u + w.v) + 0.25 * length * (inward(faces[0]) + inward(faces[1])).normalized()};
   double best = 0;
   for (const Vec3& start : starts) {
     if (!all_positive(tets, start)) continue;
@@ -76,6 +72,43 @@ double dihedral_at(const TetComplex& mesh, const Tetrahedron& t, int i, int j) {
 }
 
 }  // namespace
+
+double interior_angle_deg(const BoundaryWedge& w) {
+  const Vec3 axis = (w.v - w.u).normalized();
+  const auto across = [&](const Vec3& apex) {
+    const Vec3 d = apex - w.u;
+    return Vec3(d - d.dot(axis) * axis);
+  };
+  const Vec3 a0 = across(w.apex[0]), a1 = across(w.apex[1]);
+  const double between = std::atan2(a0.cross(a1).norm(), a0.dot(a1)) * 180.0 / M_PI;
+  // Convex when apex 1 lies inside, behind face 0 (u, v, apex 0) oriented outwards.
+  const bool convex = positively_oriented(w.u, w.apex[0], w.v, w.apex[1]);
+  return convex ? between : 360.0 - between;
+}
+
+double wedge_bound_deg(const BoundaryWedge& w, double interior_angle_deg, double goal_min_dihedral_deg) {
+  if (interior_angle_deg / 3 >= goal_min_dihedral_deg) return interior_angle_deg / 3;  // three tets of alpha / 3 may do
+  // The forced tet: face 0 (u, v, apex 0), oriented outwards, joined to apex 1 is the tet
+  // (u, apex 0, v, apex 1), valid if positive.
+  double forced = 0;
+  if (positively_oriented(w.u, w.apex[0], w.v, w.apex[1]))
+    forced = tet_shape(w.u, w.apex[0], w.v, w.apex[1]).min_dihedral_deg;
+  return std::max({forced, best_two_tet_split(w), interior_angle_deg / 3});
+}
+
+double face_bound_deg(const std::array<Vec3, 3>& face, double obtuse_weight) {
+  const std::vector<OneFreeCornerTet> tet = {on_face(face)};
+  const Vec3 centroid = (face[0] + face[1] + face[2]) / 3.0;
+  const Vec3 inward = -Vec3((face[1] - face[0]).cross(face[2] - face[0])).normalized();
+  const double size = ((face[1] - face[0]).norm() + (face[2] - face[1]).norm() + (face[0] - face[2]).norm()) / 3;
+  double best = 0;
+  for (const double height : {0.8 * size, 0.3 * size}) {  // a regular tet's height is 0.82 of its edge
+    const Vec3 start = centroid + height * inward;
+    if (!all_positive(tet, start)) continue;
+    best = std::max(best, maximise_worst_tet(tet, start, 0.5 * size, obtuse_weight).worst);
+  }
+  return std::asin(std::clamp(best, 0.0, 1.0)) * 180.0 / M_PI;
+}
 
 std::vector<LimitingBoundaryEdge> limiting_boundary_edges(const TetComplex& mesh, double goal_min_dihedral_deg) {
   std::unordered_map<EdgeKey, BoundaryEdge, EdgeKeyHash> edges;
@@ -105,15 +138,13 @@ std::vector<LimitingBoundaryEdge> limiting_boundary_edges(const TetComplex& mesh
   std::vector<LimitingBoundaryEdge> limiting;
   for (const auto& [key, edge] : edges) {
     const double alpha = edge.angle * 180.0 / M_PI;
-    if (edge.faces != 2 || alpha / 3 >= goal_min_dihedral_deg) continue;  // three tets of alpha / 3 may do
-    // The forced tet: the first face (x, y, z), oriented outwards, joined to the other apex w is
-    // the tet (x, z, y, w), valid if positive.
+    if (edge.faces != 2) continue;
+    // The edge as the first face, oriented outwards, runs it: (u, v, apex 0); the second (v, u, apex 1).
     const auto& f = edge.face[0];
-    const VertexId w = edge.apex[1];
-    double forced = 0;
-    if (positively_oriented(mesh.point(f[0]), mesh.point(f[2]), mesh.point(f[1]), mesh.point(w)))
-      forced = tet_shape(mesh.point(f[0]), mesh.point(f[2]), mesh.point(f[1]), mesh.point(w)).min_dihedral_deg;
-    const double bound = std::max({forced, best_two_tet_split(mesh, edge, key.a, key.b), alpha / 3});
+    int at = 0;
+    while (!((f[at] == key.a || f[at] == key.b) && (f[(at + 1) % 3] == key.a || f[(at + 1) % 3] == key.b))) ++at;
+    const BoundaryWedge wedge{mesh.point(f[at]), mesh.point(f[(at + 1) % 3]), {mesh.point(edge.apex[0]), mesh.point(edge.apex[1])}};
+    const double bound = wedge_bound_deg(wedge, alpha, goal_min_dihedral_deg);
     if (bound >= goal_min_dihedral_deg) continue;
     limiting.push_back({key.a, key.b, 0.5 * (mesh.point(key.a) + mesh.point(key.b)), alpha, bound});
   }

@@ -22,6 +22,26 @@
 
 namespace meshprep::improve {
 
+/// The boundary at one edge (u, v): its faces (u, v, apex 0) and (v, u, apex 1), oriented out of
+/// the solid.
+struct BoundaryWedge {
+  Vec3 u, v;
+  Vec3 apex[2];
+};
+
+/// The solid's angle at the edge, in degrees: below 180 where the edge is convex.
+double interior_angle_deg(const BoundaryWedge& w);
+
+/// bound(e) above for the edge's wedge of the given interior angle; the one- and two-tet terms are
+/// worked out only where the angle alone (alpha / 3) does not reach the goal.
+double wedge_bound_deg(const BoundaryWedge& w, double interior_angle_deg, double goal_min_dihedral_deg);
+
+/// The best biased smallest sine (tet_objective.h, with `obtuse_weight`) of any tet on the boundary
+/// face (corners oriented out of the solid), as the angle whose sine it is: the tet on it is the
+/// face joined to one point, placed by the smoothing's maximiser from two starts. A cap (a face
+/// with an angle near 180 degrees) forces a dihedral angle near 0 or 180 on it.
+double face_bound_deg(const std::array<Vec3, 3>& face, double obtuse_weight);
+
 /// Every boundary edge (an edge of two constrained faces of one region) whose bound is below
 /// `goal_min_dihedral_deg`, lowest bound first.
 std::vector<LimitingBoundaryEdge> limiting_boundary_edges(const TetComplex& mesh, double goal_min_dihedral_deg);

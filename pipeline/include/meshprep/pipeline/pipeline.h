@@ -16,6 +16,7 @@
 #include "meshprep/core/taken_back.h"
 #include "meshprep/fem/fem_verdict.h"
 #include "meshprep/fem/improve_tets.h"
+#include "meshprep/fem/knife_edges.h"
 #include "meshprep/fem/quadratic.h"
 #include "meshprep/fem/readiness.h"
 #include "meshprep/fem/tet_mesh.h"
@@ -84,6 +85,7 @@ struct PipelineResult {
   std::optional<TetQualityReport> tet_quality;  ///< of the final tets (improved, when the stage ran)
   std::optional<TetQualityReport> tetgen_quality;  ///< of TetGen's own tets, when the improvement changed them
   std::optional<ImproveResult> improvement;  ///< of `tets`: what the verdict judges
+  std::optional<KnifeEdgeResult> knife_edges;  ///< the knife_edges stage's edits and what it left, when it ran
   bool enhance_stopped_by_time_limit = false;  ///< the enhancement ended at its time limit (its best rounds kept)
   std::optional<SecondOrderRecord> second_order;  ///< tetrahedralize.order 2: the tets made second-order
   std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)

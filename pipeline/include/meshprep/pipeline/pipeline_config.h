@@ -5,7 +5,7 @@
 /// tetrahedralize.h) except where a field says otherwise; docs/pipeline.md lists every key.
 ///
 /// The file is one JSON object of sections ("repair", "reconstruct", "patches", "simplify", "smooth", "enhance",
-/// "quality", "tetrahedralize", "improve", "verdict"), each an object of keys; any subset may be given. A section "run"
+/// "knife_edges", "quality", "tetrahedralize", "improve", "verdict"), each an object of keys; any subset may be given. A section "run"
 /// (what meshprep wrote into pipeline.json about the run: input, versions) is ignored, so a
 /// pipeline.json replays its run. Unknown sections and keys are rejected with the list of valid
 /// ones, and every value is checked for its type and range.
@@ -96,6 +96,12 @@ struct PipelineConfig {
       return p;
     }
   } enhance;
+  /// The knife edges of the final surface opened before the tets are made (knife_edges.h): on by
+  /// default, where the surface itself caps the tets below improve.goal_min_dihedral_deg, within
+  /// enhance.max_deviation of the input. Skipped when no tets are made.
+  struct KnifeEdges {
+    bool enabled = true;
+  } knife_edges;
   struct Quality {
     /// The final report's sampling; each stage's row uses a fifth of the samples. 200,000 per
     /// direction (meshprep quality: 10^6) keeps the report's time below the stages' own.
