@@ -99,8 +99,7 @@ class KnifeEdgeOpener {
       std::size_t made = 0;
       for (const Knife& knife : knives) {
         if (knife.face.is_valid() ? mesh_.status(knife.face).deleted() : mesh_.status(knife.edge).deleted()) continue;
-        const double bound = knife.face.is_valid() ? face_bound(corners(knife.face))
-                                                   : bound_in_mesh(mesh_.halfedge_handle(knife.edge, 0));
+        const double bound = knife.face.is_valid() ? face_bound(corners(knife.face)) : bound_and_angle(knife.edge).first;
         if (bound >= params_.goal_min_dihedral_deg && !(knife.short_edge && is_short(knife.edge)))
           continue;  // an earlier edit opened it
         if (open(knife, bound, result)) ++made;
@@ -185,24 +184,19 @@ class KnifeEdgeOpener {
             angle};
   }
 
-  double bound_in_mesh(HH h) const {
-    const HH o = mesh_.opposite_halfedge_handle(h);
-    if (mesh_.is_boundary(h) || mesh_.is_boundary(o)) return params_.goal_min_dihedral_deg;
+  // The bound (capped at the goal) and interior angle of an edge of the mesh between two faces.
+  std::pair<double, double> bound_and_angle(EH e) const {
+    const HH h = mesh_.halfedge_handle(e, 0), o = mesh_.opposite_halfedge_handle(h);
     return bound_and_angle(mesh_.from_vertex_handle(h).idx(), mesh_.to_vertex_handle(h).idx(),
                            mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h)).idx(),
-                           mesh_.to_vertex_handle(mesh_.next_halfedge_handle(o)).idx())
-        .first;
+                           mesh_.to_vertex_handle(mesh_.next_halfedge_handle(o)).idx());
   }
 
   std::vector<Knife> knife_edges() const {
     std::vector<Knife> knives;
     for (const EH e : mesh_.edges()) {
       if (mesh_.status(e).deleted() || mesh_.is_boundary(e)) continue;
-      const HH h = mesh_.halfedge_handle(e, 0), o = mesh_.opposite_halfedge_handle(h);
-      const auto [bound, angle] =
-          bound_and_angle(mesh_.from_vertex_handle(h).idx(), mesh_.to_vertex_handle(h).idx(),
-                          mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h)).idx(),
-                          mesh_.to_vertex_handle(mesh_.next_halfedge_handle(o)).idx());
+      const auto [bound, angle] = bound_and_angle(e);
       if (bound < params_.goal_min_dihedral_deg || is_short(e))
         knives.push_back({bound, angle, e, FH(), bound >= params_.goal_min_dihedral_deg});
     }
@@ -391,6 +385,7 @@ class KnifeEdgeOpener {
 
   struct Scored {
     std::size_t edit = 0;
+    std::vector<Face> old_faces;  // the corners of the faces it takes away
     std::vector<double> bounds;
     double smallest_angle = 0;
   };
@@ -420,13 +415,12 @@ class KnifeEdgeOpener {
       // A short edge's collapse need only cost no bound; the other edits must raise them.
       if (knife.short_edge ? better(old_bounds, new_bounds) : !better(new_bounds, old_bounds)) continue;
       if (new_shape < std::min(old_shape, params_.goal_min_dihedral_deg)) continue;
-      scored.push_back({k, std::move(new_bounds), new_angle});
+      scored.push_back({k, std::move(old_faces), std::move(new_bounds), new_angle});
     }
     std::stable_sort(scored.begin(), scored.end(), [&](const Scored& a, const Scored& b) { return better(a.bounds, b.bounds); });
     for (const Scored& s : scored) {
       const Edit& edit = edits[s.edit];
-      std::vector<Face> old_faces;
-      for (const FH f : edit.old_faces) old_faces.push_back(corners(f));
+      const std::vector<Face>& old_faces = s.old_faces;
       const double moved = displacement(edit, old_faces);
       if (!(moved <= params_.max_deviation)) continue;
       Box3 near;
