@@ -47,12 +47,14 @@ Action add_repair_command(CLI::App& app) {
       "Mend a dirty surface (weld split vertices, split faces at T-junctions, drop degenerate and duplicate "
       "faces, split non-manifold edges and vertices, drop lone faces (fins), orient consistently and outward, "
       "fill holes: all but an open sheet's outline, or those up to --max-hole; cut self-intersections and keep "
-      "the union's boundary); written only if it is then ready for tetrahedralize");
+      "the union's boundary, or rebuild the solid on a grid where the cut leaves crossings); written only if it is then ready for tetrahedralize");
   cmd->add_option("input", o->input, "Surface mesh (.off .obj .ply .stl)")->required();
   cmd->add_option("-o,--output", o->output, "Repaired surface (.off .obj .ply .stl)")->required();
   add_parameter(*cmd, repair_parameters().weld_tolerance, o->params.weld_tolerance);
   add_auto_parameter(*cmd, repair_parameters().max_hole, o->params.max_hole);
   add_parameter(*cmd, repair_parameters().keep_cavities, o->params.keep_cavities);
+  add_choice(*cmd, repair_parameters().route, o->params.route, repair_routes());
+  add_parameter(*cmd, repair_parameters().envelope_cells, o->params.envelope_cells);
   cmd->add_option("--json", o->json, "Write the counts of each step and the readiness as JSON (- for standard output)");
   return [o] { return run_repair(*o); };
 }

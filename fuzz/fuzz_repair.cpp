@@ -21,6 +21,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   RepairParams params;
   params.keep_cavities = (data[1] & 1) != 0;
   if (data[1] >> 1 & 1) params.max_hole = (data[1] >> 2 & 1) ? 3.0 : 0.0;
+  // Both routes, the envelope's on a coarse grid (its cost grows with the cube of the cells).
+  params.route = (data[1] >> 3) % 3 == 0 ? RepairRoute::automatic : (data[1] >> 3) % 3 == 1 ? RepairRoute::exact
+                                                                                           : RepairRoute::envelope;
+  params.envelope_cells = 16;
   std::size_t at = 2;
   if (size < at + 3 * point_count) return 0;
   TriangleSoup soup;
@@ -31,6 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Vec3& p : soup.points) fuzz::require(p.allFinite(), "every point is finite");
     for (const Triangle& t : soup.triangles)
       for (const std::uint32_t corner : t) fuzz::require(corner < soup.points.size(), "every corner indexes a point");
+    if (result.envelope)
+      fuzz::require(find_self_intersections(soup).count == 0, "the envelope's faces cross nowhere");
     if (result.free_of_self_intersections)
       fuzz::require(find_self_intersections(soup).count == 0, "no intersecting pair where the repair found none");
   });

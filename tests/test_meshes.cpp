@@ -26,6 +26,12 @@ TriangleSoup cube(double s) {
   return c;
 }
 
+TriangleSoup box(const Vec3& lo, const Vec3& hi) {
+  TriangleSoup b = cube();
+  for (Vec3& p : b.points) p = lo + p.cwiseProduct(hi - lo);
+  return b;
+}
+
 TriangleSoup icosphere(int levels, double r) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   TriangleSoup s;

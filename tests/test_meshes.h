@@ -11,6 +11,9 @@ TriangleSoup regular_tetrahedron(double edge = 1.0);
 /// Axis-aligned cube [0,s]^3, 12 triangles, outward orientation. Volume s^3.
 TriangleSoup cube(double s = 1.0);
 
+/// The axis-aligned box [lo, hi], twelve outward faces.
+TriangleSoup box(const Vec3& lo, const Vec3& hi);
+
 /// Icosahedron subdivided `levels` times (1-to-4) and projected on the sphere of radius r.
 TriangleSoup icosphere(int levels, double r = 1.0);
 

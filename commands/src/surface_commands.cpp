@@ -4,6 +4,7 @@
 
 #include "meshprep/fem/readiness.h"
 #include "meshprep/preprocess/compose/adaptive_reconstruction.h"
+#include "meshprep/preprocess/compose/repair_solid.h"
 #include "meshprep/quality/json_values.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/statistics.h"
@@ -83,7 +84,7 @@ std::string repair_summary(const RepairResult& r) {
          std::to_string(r.intersecting_pairs) + " intersecting pairs and removed " + std::to_string(r.removed_faces) +
          " pieces inside, dropped " + std::to_string(r.nested_components) + " nested parts (" +
          std::to_string(r.cavities) + " kept as cavities), moved apart " + std::to_string(r.separated_pinches) +
-         " copies of points where parts touch";
+         " copies of points where parts touch" + envelope_summary(r);
 }
 
 RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, const CommandNames& names,
@@ -94,7 +95,7 @@ RepairOutcome repair_command(TriangleSoup input, const RepairParams& params, con
   stoppable.cancelled = hooks.until_deadline().cancelled;
   const RepairResult& result = outcome.result = [&] {
     try {
-      return repair(input, stoppable);
+      return repair_solid(input, stoppable);
     } catch (const InvalidInput& e) {
       throw InvalidInput(names.input + ": " + e.what());
     }

@@ -14,6 +14,7 @@
 #include "meshprep/preprocess/enhance/enhance.h"
 #include "meshprep/preprocess/patches/patches.h"
 #include "meshprep/preprocess/reconstruct/reconstruct.h"
+#include "meshprep/preprocess/compose/repair_solid.h"
 #include "meshprep/preprocess/repair/repair.h"
 #include "meshprep/preprocess/simplify/simplify.h"
 #include "meshprep/preprocess/smooth/smooth.h"
@@ -223,7 +224,7 @@ class Run {
     }
     RepairParams every_loop = config_.repair.params;
     every_loop.max_hole = std::numeric_limits<double>::infinity();
-    const RepairResult closing = on_input([&] { return repair(soup, every_loop); });
+    const RepairResult closing = on_input([&] { return repair_solid(soup, every_loop); });
     r.holes.erase(std::remove_if(r.holes.begin(), r.holes.end(), [](const RepairHole& h) { return !h.filled; }),
                   r.holes.end());
     r.holes.insert(r.holes.end(), closing.holes.begin(), closing.holes.end());
@@ -233,6 +234,10 @@ class Run {
     r.cut_faces += closing.cut_faces;
     r.removed_faces += closing.removed_faces;
     r.separated_pinches += closing.separated_pinches;
+    if (closing.envelope) {
+      r.route = closing.route;
+      r.envelope = closing.envelope;
+    }
     r.seconds += closing.seconds;
     return true;
   }
@@ -248,7 +253,7 @@ class Run {
     params.cancelled = [this] { return stop_or_deadline(); };
     RepairResult r = on_input([&] {
       try {
-        return repair(loaded.soup, params);
+        return repair_solid(loaded.soup, params);
       } catch (const Cancelled&) {
         stop_if_cancelled();  // the user's stop or the deadline, said as such
         throw;
@@ -269,14 +274,14 @@ class Run {
                                          "t_junction_splits", "split_edges", "split_vertices", "dropped_lone_faces",
                                          "flipped_faces", "inverted_components", "filled_holes",
                                          "open_holes", "holes", "intersecting_pairs", "cut_faces", "removed_faces",
-                                         "nested_components", "cavities", "separated_pinches"});
+                                         "nested_components", "cavities", "separated_pinches", "route", "envelope"});
     record.note = std::to_string(r.welded_vertices) + " vertices welded, " +
                   std::to_string(r.degenerate_faces + r.duplicate_faces) + " faces removed, " +
                   std::to_string(r.split_edges + r.split_vertices) + " non-manifold edges and vertices split, " +
                   std::to_string(r.flipped_faces) + " flipped, " + std::to_string(r.filled_holes) + " holes filled (" +
                   std::to_string(r.open_holes) + " left open), " + std::to_string(r.intersecting_pairs) +
                   " crossing face pairs cut (" + std::to_string(r.removed_faces) + " pieces inside removed, " +
-                  std::to_string(r.nested_components) + " nested parts dropped)" +
+                  std::to_string(r.nested_components) + " nested parts dropped)" + envelope_summary(r) +
                   (outline_filled ? "; an open sheet's outline filled: it is no height field to extrude" : "");
     finish(std::move(record));
     return loaded;

@@ -152,7 +152,10 @@ std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
                "self-intersections in the input before it is checked (meshprep repair)"),
           number("repair", repair_parameters().weld_tolerance, r.params.weld_tolerance),
           number_or_auto("repair", repair_parameters().max_hole, r.params.max_hole),
-          flag("repair", repair_parameters().keep_cavities, r.params.keep_cavities)};
+          flag("repair", repair_parameters().keep_cavities, r.params.keep_cavities),
+          choice("repair", repair_parameters().route.key, r.params.route, repair_routes(),
+                 repair_parameters().route.help),
+          count("repair", repair_parameters().envelope_cells, r.params.envelope_cells)};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {

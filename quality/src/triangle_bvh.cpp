@@ -215,10 +215,6 @@ bool TriangleBvh::reaches_within(const Vec3& p, double squared_radius) const {
   return false;
 }
 
-namespace {
-
-// Where the ray origin + t direction crosses triangle (a, b, c): t, or infinity if it does not
-// (Moeller & Trumbore 1997; parallel rays and crossings at t <= 0 count as none).
 double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a;
   const Vec3 p = direction.cross(ac);
@@ -233,6 +229,8 @@ double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, co
   const double t = ac.dot(q) / det;
   return t > 0 ? t : std::numeric_limits<double>::infinity();
 }
+
+namespace {
 
 // Where the ray enters `box` (0 if it starts inside), or infinity if it misses it (slab test).
 double ray_box(const Vec3& origin, const Vec3& inverse_direction, const Box3& box) {

@@ -1,6 +1,8 @@
 #include "meshprep/preprocess/repair/repair.h"
 
 #include "repair/drop_lone_faces.h"
+#include "repair/envelope_deviation.h"
+#include "repair/envelope_surface.h"
 #include "repair/fill_holes.h"
 #include "repair/orient_components.h"
 #include "repair/remove_self_intersections.h"
@@ -12,11 +14,14 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/preprocess/repair/repair_parameters.h"
 #include "meshprep/quality/face_edges.h"
+#include "meshprep/quality/self_intersections.h"
+#include "meshprep/quality/surface_distance.h"
 
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,12 +40,48 @@ namespace {
                      std::to_string(result.removed_faces) + " pieces lie inside the solid; nothing is written");
 }
 
+// Step 7: `surface` rebuilt from `soup` (the surface as steps 1-5 left it) on the grid, and its
+// distance from `soup` measured.
+RepairEnvelope rebuild_on_envelope(TriangleSoup& surface, const TriangleSoup& soup, std::string reason,
+                                   const RepairParams& params, const std::function<void()>& poll) {
+  const auto start = std::chrono::steady_clock::now();
+  RepairEnvelope envelope;
+  envelope.reason = std::move(reason);
+  envelope.cells = params.envelope_cells;
+  envelope.bound = params.fidelity_bound;
+  detail::EnvelopeSurface rebuilt = detail::envelope_surface(soup, params.envelope_cells, poll);
+  if (rebuilt.surface.triangles.empty())
+    throw SolverError("repair: the envelope route found no point of a " + std::to_string(params.envelope_cells) +
+                      "-cell grid inside the surface (it encloses nothing thicker than a cell: give more "
+                      "--envelope-cells); nothing is written");
+  envelope.cell = rebuilt.cell;
+  envelope.grid_points = rebuilt.grid_points;
+  envelope.faces = rebuilt.surface.triangles.size();
+  envelope.relabelled_specks = rebuilt.relabelled_specks;
+  poll();
+  const double diagonal = bbox_diagonal(soup);
+  const detail::EnvelopeDeviation deviation =
+      detail::envelope_deviation(rebuilt.surface, soup,
+                                 envelope.bound > 0 ? envelope.bound * diagonal : std::numeric_limits<double>::infinity(),
+                                 rebuilt.cell,
+                                 RepairEnvelope::kListedPlaces);
+  envelope.distance_max = deviation.max / diagonal;
+  envelope.distance_rms = deviation.rms / diagonal;
+  envelope.samples_over_bound = deviation.over_bound;
+  for (const detail::DeviationPlace& place : deviation.places)
+    envelope.places.push_back({place.point, place.distance / diagonal});
+  surface = std::move(rebuilt.surface);
+  envelope.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return envelope;
+}
+
 }  // namespace
 
 RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (!(params.weld_tolerance >= 0 && std::isfinite(params.weld_tolerance)))
     throw InvalidInput("repair: the weld tolerance must be a finite number >= 0");
   if (params.max_hole) check_parameter("repair", repair_parameters().max_hole, *params.max_hole);
+  check_parameter("repair", repair_parameters().envelope_cells, static_cast<double>(params.envelope_cells));
   const auto start = std::chrono::steady_clock::now();
   const auto poll = [&params] {
     if (params.cancelled && params.cancelled()) throw Cancelled("repair stopped");
@@ -85,16 +126,40 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   }
   poll();
   if (result.filled_holes > 0) uses = sorted_face_edges(surface);
-  const detail::SelfIntersectionCounts crossing =
-      detail::remove_self_intersections(surface, uses, params.keep_cavities, poll);
-  result.intersecting_pairs = crossing.intersecting_pairs;
-  result.cut_faces = crossing.cut_faces;
-  result.removed_faces = crossing.removed_faces;
-  result.nested_components = crossing.nested_components;
-  result.cavities = crossing.cavities;
-  result.separated_pinches = crossing.separated_pinches;
-  result.free_of_self_intersections = crossing.found_none;
-  if (surface.triangles.empty()) refuse_empty(input_faces, result);
+  std::string envelope_reason;
+  TriangleSoup before_cut;
+  if (params.route == RepairRoute::envelope) {
+    envelope_reason = "asked (route envelope)";
+    before_cut = surface;
+  } else {
+    // The envelope needs a closed surface to tell inside from outside: with a hole left open (a
+    // sheet's outline) the exact route's result stands, whatever it left.
+    const bool fallback = params.route == RepairRoute::automatic && result.open_holes == 0;
+    if (fallback) before_cut = surface;
+    const detail::SelfIntersectionCounts crossing =
+        detail::remove_self_intersections(surface, uses, params.keep_cavities, poll);
+    result.intersecting_pairs = crossing.intersecting_pairs;
+    result.cut_faces = crossing.cut_faces;
+    result.removed_faces = crossing.removed_faces;
+    result.nested_components = crossing.nested_components;
+    result.cavities = crossing.cavities;
+    result.separated_pinches = crossing.separated_pinches;
+    result.free_of_self_intersections = crossing.found_none;
+    if (surface.triangles.empty()) refuse_empty(input_faces, result);
+    if (fallback && !crossing.found_none) {
+      poll();
+      const std::size_t left = find_self_intersections(surface).count;
+      result.free_of_self_intersections = left == 0;
+      if (left > 0)
+        envelope_reason = "the exact cut left " + std::to_string(left) + " pairs of faces crossing";
+    }
+  }
+  if (!envelope_reason.empty()) {
+    poll();
+    result.route = "envelope";
+    result.envelope = rebuild_on_envelope(surface, before_cut, envelope_reason, params, poll);
+    result.free_of_self_intersections = false;  // by construction, but the caller's check confirms it
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

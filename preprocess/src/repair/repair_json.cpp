@@ -2,7 +2,29 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cstdio>
+
 namespace meshprep {
+
+std::string envelope_summary(const RepairResult& result) {
+  if (!result.envelope) return {};
+  const RepairEnvelope& e = *result.envelope;
+  std::array<char, 160> figures;
+  std::snprintf(figures.data(), figures.size(), "%.1e of the diagonal from the input at most, %.1e RMS", e.distance_max,
+                e.distance_rms);
+  std::array<char, 32> bound;
+  std::snprintf(bound.data(), bound.size(), "%g", e.bound);
+  std::string summary = "; " + e.reason + ": the solid rebuilt on a " + std::to_string(e.cells) +
+                        "-cell grid (envelope route), " + figures.data();
+  if (e.bound > 0)
+    summary += ", " + std::to_string(e.places.size()) +
+               (e.places.size() == RepairEnvelope::kListedPlaces ? " or more" : "") + " places over the " +
+               bound.data() + " bound";
+  if (e.reduced_faces > 0)
+    summary += ", simplified from " + std::to_string(e.faces) + " to " + std::to_string(e.reduced_faces) + " faces";
+  return summary;
+}
 
 nlohmann::ordered_json to_json(const RepairResult& result) {
   nlohmann::ordered_json json;
@@ -43,6 +65,29 @@ nlohmann::ordered_json to_json(const RepairResult& result) {
   json["nested_components"] = result.nested_components;
   json["cavities"] = result.cavities;
   json["separated_pinches"] = result.separated_pinches;
+  json["route"] = result.route;
+  if (!result.envelope) {
+    json["envelope"] = nullptr;
+  } else {
+    const RepairEnvelope& e = *result.envelope;
+    nlohmann::ordered_json envelope;
+    envelope["reason"] = e.reason;
+    envelope["cells"] = e.cells;
+    envelope["cell"] = e.cell;
+    envelope["grid_points"] = e.grid_points;
+    envelope["relabelled_specks"] = e.relabelled_specks;
+    envelope["faces"] = e.faces;
+    envelope["reduced_faces"] = e.reduced_faces;
+    envelope["distance_max"] = e.distance_max;
+    envelope["distance_rms"] = e.distance_rms;
+    envelope["bound"] = e.bound;
+    envelope["samples_over_bound"] = e.samples_over_bound;
+    envelope["places"] = nlohmann::ordered_json::array();
+    for (const RepairPlace& p : e.places)
+      envelope["places"].push_back({{"point", {p.point.x(), p.point.y(), p.point.z()}}, {"distance", p.distance}});
+    envelope["time_seconds"] = e.seconds;
+    json["envelope"] = envelope;
+  }
   json["time_seconds"] = result.seconds;
   return json;
 }

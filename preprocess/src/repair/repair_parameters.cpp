@@ -31,8 +31,26 @@ const RepairParameters& repair_parameters() {
        {0, inf}},
       {"keep_cavities", "--keep-cavities",
        "keep a closed part lying inside another and touching nothing as the wall of a void, instead of dropping it",
-       {}}};
+       {}},
+      {"route", "--route",
+       "how crossing faces are mended: exact (cut along the crossings, keep the union's faces: the surface does not "
+       "move), envelope (the solid rebuilt on a grid from the winding number: always a valid solid, moved by up to "
+       "about a cell), auto (exact, and envelope where the exact cut leaves crossings)",
+       {}},
+      // 128: a cell of 1/128 of the longest side, about 4e-3 of a cube's diagonal; the vertices
+      // lie on the input, so what moves is the faces between them at sharp edges (a chamfer under
+      // half a cell). Time and memory grow with the cube of it.
+      {"envelope_cells", "--envelope-cells",
+       "cells of the envelope route's grid across the surface's longest side (finer: closer to the input, slower "
+       "by the cube)",
+       {8, 1024}}};
   return parameters;
+}
+
+const Choices<RepairRoute>& repair_routes() {
+  static const Choices<RepairRoute> routes = {
+      {"auto", RepairRoute::automatic}, {"exact", RepairRoute::exact}, {"envelope", RepairRoute::envelope}};
+  return routes;
 }
 
 }  // namespace meshprep

@@ -19,13 +19,6 @@
 namespace meshprep {
 namespace {
 
-// The axis-aligned box [lo, hi], twelve outward faces.
-TriangleSoup box(const Vec3& lo, const Vec3& hi) {
-  TriangleSoup b = test::cube();
-  for (Vec3& p : b.points) p = lo + p.cwiseProduct(hi - lo);
-  return b;
-}
-
 TriangleSoup transformed(TriangleSoup soup, const Eigen::Matrix3d& rotation, double scale, const Vec3& shift) {
   for (Vec3& p : soup.points) p = rotation * p * scale + shift;
   return soup;
@@ -92,7 +85,7 @@ TEST(RepairIntersections, TwoCrossingTrianglesAreCutAlongTheirCommonSegment) {
 }
 
 TEST(RepairIntersections, OverlappingBoxesBecomeTheirUnion) {
-  const RepairResult r = expect_union(box({0, 0, 0}, {2, 2, 2}), box({1, 1, 1}, {3, 3, 3}), 8 + 8 - 1);
+  const RepairResult r = expect_union(test::box({0, 0, 0}, {2, 2, 2}), test::box({1, 1, 1}, {3, 3, 3}), 8 + 8 - 1);
   EXPECT_GT(r.intersecting_pairs, 0u);
   EXPECT_GT(r.removed_faces, 0u);
 }
@@ -101,7 +94,7 @@ TEST(RepairIntersections, OverlappingBoxesBecomeTheirUnion) {
 // valid and the volume 15 up to that rounding.
 TEST(RepairIntersections, TheUnionHoldsRotatedScaledAndMoved) {
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-  const TriangleSoup boxes = test::merged(box({0, 0, 0}, {2, 2, 2}), box({1, 1, 1}, {3, 3, 3}));
+  const TriangleSoup boxes = test::merged(test::box({0, 0, 0}, {2, 2, 2}), test::box({1, 1, 1}, {3, 3, 3}));
   std::size_t faces = 0;
   for (const double scale : {1.0, 1e-3, 1e3}) {
     const TriangleSoup input = transformed(boxes, rotation, scale, Vec3(1, -2, 5) * scale * 1e3);
@@ -117,21 +110,21 @@ TEST(RepairIntersections, TheUnionHoldsRotatedScaledAndMoved) {
 
 // Coplanar faces overlapping and facing the same way: one copy of the overlap stays.
 TEST(RepairIntersections, BoxesOverlappingFlushShareTheirCoplanarSides) {
-  EXPECT_GT(expect_union(box({0, 0, 0}, {2, 2, 2}), box({1, 0, 0}, {3, 2, 2}), 12).intersecting_pairs, 0u);
+  EXPECT_GT(expect_union(test::box({0, 0, 0}, {2, 2, 2}), test::box({1, 0, 0}, {3, 2, 2}), 12).intersecting_pairs, 0u);
 }
 
 // The shared face is written by both boxes, facing into each other: a wall, both copies go.
 TEST(RepairIntersections, TwoBoxesSharingAFaceBecomeOne) {
-  EXPECT_EQ(expect_union(box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1}), 2).duplicate_faces, 4u);
+  EXPECT_EQ(expect_union(test::box({0, 0, 0}, {1, 1, 1}), test::box({1, 0, 0}, {2, 1, 1}), 2).duplicate_faces, 4u);
 }
 
 // A box sharing part of a face with a larger one: the face is cut where the small one sits on it.
 TEST(RepairIntersections, ABoxOnPartOfAnothersFaceIsJoinedToIt) {
-  expect_union(box({0, 0, 0}, {2, 2, 2}), box({2, 0.5, 0.5}, {3, 1.5, 1.5}), 9);
+  expect_union(test::box({0, 0, 0}, {2, 2, 2}), test::box({2, 0.5, 0.5}, {3, 1.5, 1.5}), 9);
 }
 
 TEST(RepairIntersections, ABoxInsideABoxIsDroppedOrKeptAsACavity) {
-  const TriangleSoup input = test::merged(box({0, 0, 0}, {4, 4, 4}), box({1, 1, 1}, {2, 2, 2}));
+  const TriangleSoup input = test::merged(test::box({0, 0, 0}, {4, 4, 4}), test::box({1, 1, 1}, {2, 2, 2}));
   TriangleSoup dropped = input;
   const RepairResult r = repair(dropped);
   EXPECT_EQ(r.nested_components, 1u);

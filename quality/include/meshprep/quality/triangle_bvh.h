@@ -26,6 +26,10 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
 /// Closest point on segment [a, b] to p (a if the segment has no length).
 Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
 
+/// Where the ray origin + t direction crosses triangle (a, b, c): t, or infinity if it does not
+/// (Moeller & Trumbore 1997; parallel rays and crossings at t <= 0 count as none).
+double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b, const Vec3& c);
+
 class TriangleBvh {
  public:
   /// Builds the hierarchy over every triangle of `soup` (a view: what it sees, a TriangleSoup or a

@@ -32,6 +32,14 @@
 ///    Why this method: every kept piece lies on the input (to the rounding of the new points), so
 ///    the surface moves by nothing measurable, and it gives the union the issue asks of touching,
 ///    overlapping and nested parts, which a local remesh of the crossing faces cannot.
+/// 7. the envelope route (repair.route): where the exact cut leaves faces crossing (its new
+///    points rounded to doubles can cross again where cut curves meet within rounding distance,
+///    and its passes are bounded), or when asked, the surface is rebuilt from the soup as steps 1-5
+///    left it: the boundary of where its generalised winding number is at least one half, on a grid
+///    of envelope_cells across the longest side (envelope_surface.h, after fTetWild's inside test,
+///    Hu et al. 2020). Always closed, manifold and free of crossings; its vertices lie on the input,
+///    its faces within about half a cell of it, and the distance both ways is measured and reported,
+///    with the places farther than the fidelity bound.
 /// The caller checks the result (fem's check_fem_readiness) and refuses what is left. A repair
 /// that would leave no face throws InvalidInput, naming what it removed.
 
@@ -47,6 +55,9 @@
 
 namespace meshprep {
 
+/// How crossing faces are mended (step 6 or 7).
+enum class RepairRoute { automatic, exact, envelope };
+
 struct RepairParams {
   /// Vertices closer than this fraction of the median edge length are welded. A file that splits
   /// its vertices writes each copy with the same digits, so exact copies dominate; the margin
@@ -59,6 +70,12 @@ struct RepairParams {
   /// A closed part inside another that touches nothing is kept as the wall of a void (facing
   /// inwards) instead of being dropped.
   bool keep_cavities = false;
+  RepairRoute route = RepairRoute::automatic;
+  /// The envelope route's grid: cells across the longest side of the bounding box.
+  std::size_t envelope_cells = 128;
+  /// The envelope route lists the places where its surface lies farther from the input than this
+  /// fraction of the diagonal (no parameter of its own: repair_solid.h passes the enhancement's).
+  double fidelity_bound = 0;
   /// Optional, asked between the steps and between the self-intersection step's passes; true:
   /// throw Cancelled (the surface is then partly repaired: repair a copy to keep the input).
   std::function<bool()> cancelled;
@@ -75,6 +92,30 @@ struct RepairHole {
   double patch_area = 0;
   double plane_distance = 0;  ///< largest distance of the patch's vertices to the rim's least-squares plane
   bool faired = false;        ///< false if the fairing's solve failed (the patch stays refined, not faired)
+};
+
+/// A place where the envelope route's surface lies farther from the input than the fidelity bound.
+struct RepairPlace {
+  Vec3 point = Vec3::Zero();
+  double distance = 0;  ///< as a fraction of the input's bounding-box diagonal
+};
+
+/// What the envelope route did (step 7). Distances are fractions of the input's bounding-box
+/// diagonal, measured both ways (envelope_deviation.h: the input's inner walls are not measured).
+struct RepairEnvelope {
+  std::string reason;           ///< why it ran: asked, or the exact cut's leftovers
+  std::size_t cells = 0;        ///< across the longest side
+  double cell = 0;              ///< the grid's spacing, in the surface's units
+  std::size_t grid_points = 0;
+  std::size_t relabelled_specks = 0;  ///< grid points of groups smaller than a cube, given the other label
+  std::size_t faces = 0;              ///< the grid's surface
+  std::size_t reduced_faces = 0;      ///< after repair_solid.h's simplification (0: not simplified)
+  double distance_max = 0, distance_rms = 0;
+  double bound = 0;                    ///< the fidelity bound the places are judged by
+  std::size_t samples_over_bound = 0;  ///< of the measured samples
+  std::vector<RepairPlace> places;     ///< the farthest places over the bound (at most kListedPlaces)
+  static constexpr std::size_t kListedPlaces = 20;
+  double seconds = 0;
 };
 
 struct RepairResult {
@@ -107,11 +148,20 @@ struct RepairResult {
   /// The step's last search for intersecting pairs was on the surface as returned and found none
   /// (check_fem_readiness can then skip its own).
   bool free_of_self_intersections = false;
+  /// "exact" (step 6) or "envelope" (step 7; then the counts of step 6 are those of the attempt
+  /// the envelope replaced, if any).
+  std::string route = "exact";
+  std::optional<RepairEnvelope> envelope;
   double seconds = 0;
 };
 
 /// Repair `surface` in place (steps above).
 RepairResult repair(TriangleSoup& surface, const RepairParams& params = {});
+
+/// What the envelope route did, as a clause the summaries append ("; the exact cut left 3 pairs of
+/// faces crossing: the solid rebuilt on a 128-cell grid (envelope route), 1.1e-03 of the diagonal
+/// from the input at most, 2.0e-04 RMS, 4 places over the 0.002 bound"); empty for the exact route.
+std::string envelope_summary(const RepairResult& result);
 
 /// The run as `meshprep repair --json` writes it: the fields above by name (holes as an array of
 /// objects), time_seconds last.

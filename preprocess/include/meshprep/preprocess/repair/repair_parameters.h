@@ -4,6 +4,7 @@
 /// defaults are RepairParams'.
 
 #include "meshprep/core/parameter.h"
+#include "meshprep/preprocess/repair/repair.h"
 
 namespace meshprep {
 
@@ -11,8 +12,13 @@ struct RepairParameters {
   ParameterInfo weld_tolerance;
   ParameterInfo max_hole;
   ParameterInfo keep_cavities;
+  ParameterInfo route;
+  ParameterInfo envelope_cells;
 };
 
 const RepairParameters& repair_parameters();
+
+/// The names of RepairRoute.
+const Choices<RepairRoute>& repair_routes();
 
 }  // namespace meshprep
