@@ -112,8 +112,10 @@ int exit_code(const PipelineOptions& o, const PipelineResult& result, const Pipe
     if (result.tets)
       for (const std::string& problem : result.fem.problems)
         std::cerr << "meshprep: " << o.input << ": not FEM-ready: " << problem << '\n';
-    reasons = "not FEM-ready: " + (result.tets ? "the tets fail " + failed_names(TetVerdict{result.fem.checks}) + " (above)"
-                                               : result.fem.problems.front());
+    const std::string failed = failed_names(TetVerdict{result.fem.checks});
+    reasons = "not FEM-ready: " + (!result.tets        ? result.fem.problems.front()
+                                   : failed.empty()    ? std::string("see above")
+                                                       : "the tets fail " + failed + " (above)");
   }
   for (const GateCondition& c : held)
     std::cerr << "meshprep: " << o.input << ": --fail-on: " << c.text << " holds (is " << c.actual.dump() << ")\n";

@@ -350,6 +350,13 @@ no_leftovers "pipeline --time-limit" timed_out
 expect_exit "tetrahedralize --timeout" 124 $?
 one_line "tetrahedralize --timeout" "fandisk.off: the time limit (--time-limit 1 s) came before anything usable was made; nothing written"
 [ ! -e slow.msh ] && ok || bad "tetrahedralize --timeout wrote slow.msh"
+# The repair's envelope route asks for the stop as it samples its grid (layer by layer) and as it
+# simplifies: a second is far too short for 256 cells across the fandisk.
+"$bin" repair "$src/examples/data/fandisk.off" -o envelope.off --route envelope --envelope-cells 256 --time-limit 1 \
+  2> err.txt
+expect_exit "repair --route envelope --time-limit" 124 $?
+one_line "repair --time-limit" "fandisk.off: the time limit (--time-limit 1 s) came before anything usable was made; nothing written"
+[ ! -e envelope.off ] && ok || bad "repair --time-limit wrote envelope.off"
 # (A killed child may take a moment to vanish on a loaded machine; a leaked one, working on 10^6
 # tets, is still there seconds later.)
 for _ in 1 2 3 4 5 6 7 8 9 10; do

@@ -224,6 +224,7 @@ class Run {
     }
     RepairParams every_loop = config_.repair.params;
     every_loop.max_hole = std::numeric_limits<double>::infinity();
+    every_loop.fidelity_bound = fidelity_bound();
     const RepairResult closing = on_input([&] { return repair_solid(soup, every_loop); });
     r.holes.erase(std::remove_if(r.holes.begin(), r.holes.end(), [](const RepairHole& h) { return !h.filled; }),
                   r.holes.end());
@@ -250,6 +251,7 @@ class Run {
     loaded.soup = given_ ? *given_->surface : read_soup(result_.input, &loaded.read);
     record.faces_before = loaded.soup.triangles.size();
     RepairParams params = config_.repair.params;
+    params.fidelity_bound = fidelity_bound();
     params.cancelled = [this] { return stop_or_deadline(); };
     RepairResult r = on_input([&] {
       try {
@@ -266,6 +268,7 @@ class Run {
                            " holes open in a closed input (" + std::to_string(r.removed_faces) +
                            " pieces removed where faces cross); nothing is written");
     const bool outline_filled = r.open_holes == 1 && close_sheet(loaded.soup, r);
+    envelope_ = r.envelope;
     loaded.mesh = mesh_from_soup(loaded.soup, &loaded.build);
     record.seconds = r.seconds;
     report = analyze_quality(loaded.soup, stage_params_);
@@ -453,7 +456,7 @@ class Run {
     KnifeEdgeParams params;
     params.goal_min_dihedral_deg = config_.improve.params.goal_min_dihedral_deg;
     params.goal_max_dihedral_deg = config_.improve.params.goal_max_dihedral_deg;
-    params.max_deviation = config_.enhance.params.max_deviation.value_or(EnhanceParams::kLargestAutoDeviation) *
+    params.max_deviation = fidelity_bound() *
                            result_.input_quality.bbox_diagonal;
     const KnifeEdgeResult r = open_knife_edges(mesh_, result_.input_surface, params);
     record.seconds = r.seconds;
@@ -633,7 +636,20 @@ class Run {
         result_.fem.problems.push_back(limit.empty() ? problem : problem + "; " + limit);
       }
     }
+    // The stages after the repair hold the surface to the repaired one: what the envelope route
+    // moved it from the input is the repair's to judge.
+    if (envelope_ && envelope_->distance_max > envelope_->bound)
+      result_.fem.problems.push_back(
+          "the repair's envelope route moved the surface up to " + figure(envelope_->distance_max) +
+          " of the diagonal from the input (bound " + figure(envelope_->bound) + "; the repair row lists the places)" +
+          "; a finer grid (repair.envelope_cells) comes closer, or allow more with enhance.max_deviation");
     result_.fem.ready = result_.tets.has_value() && result_.fem.problems.empty();
+  }
+
+  // How far the surface may move from the input, as a fraction of its diagonal: the enhancement's
+  // bound, which the knife-edge stage and the repair's envelope route answer to as well.
+  double fidelity_bound() const {
+    return config_.enhance.params.max_deviation.value_or(EnhanceParams::kLargestAutoDeviation);
   }
 
   const PipelineConfig& config_;
@@ -643,6 +659,7 @@ class Run {
   TriMesh mesh_;
   std::size_t input_self_intersections_ = 0;
   const PipelineInput* given_;  ///< the input in memory, or null: the file result_.input
+  std::optional<RepairEnvelope> envelope_;  ///< what the repair's envelope route did, if it ran
 };
 
 }  // namespace

@@ -18,14 +18,18 @@ constexpr double kReductionShare = 0.25;
 }  // namespace
 
 RepairResult repair_solid(TriangleSoup& surface, RepairParams params) {
-  params.fidelity_bound = EnhanceParams::kLargestAutoDeviation;
+  if (!(params.fidelity_bound > 0)) params.fidelity_bound = EnhanceParams::kLargestAutoDeviation;
   const std::size_t input_faces = surface.triangles.size();
   RepairResult result = repair(surface, params);
   if (!result.envelope) return result;
   const auto start = std::chrono::steady_clock::now();
-  if (params.cancelled && params.cancelled()) throw Cancelled("repair stopped");
+  const auto poll = [&params](double) {
+    if (params.cancelled && params.cancelled()) throw Cancelled("repair stopped");
+  };
+  poll(0);
   TriMesh mesh = mesh_from_soup(surface);
   SimplifyParams reduction;
+  reduction.progress = poll;  // the simplification reports as it goes: the user's stop and the deadline
   reduction.target_faces = std::min(input_faces, mesh.n_faces());
   reduction.max_error = kReductionShare * params.fidelity_bound;
   simplify(mesh, reduction);

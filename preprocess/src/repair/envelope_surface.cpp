@@ -166,11 +166,13 @@ EnvelopeSurface envelope_surface(const TriangleSoup& soup, std::size_t cells, co
   // The label of every grid point: inside (the number at least one half) or not.
   std::vector<std::uint8_t> inside(grid.size(), 0);
   const std::array<std::size_t, 3> n = grid.points;
-  tbb::parallel_for(std::size_t{0}, n[2], [&](std::size_t k) {
-    for (std::size_t j = 0; j < n[1]; ++j)
+  // Layer by layer, the stop asked after each (the longest step on a fine grid).
+  for (std::size_t k = 0; k < n[2]; ++k) {
+    tbb::parallel_for(std::size_t{0}, n[1], [&](std::size_t j) {
       for (std::size_t i = 0; i < n[0]; ++i) inside[grid.index(i, j, k)] = winding.at(grid.at(i, j, k)) >= 0.5;
-  });
-  poll();
+    });
+    poll();
+  }
   result.relabelled_specks = relabel_specks(grid, inside);
 
   // Marching tetrahedra: the vertices named by their grid edge (from point, one of 7 steps), each

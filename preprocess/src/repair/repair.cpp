@@ -16,6 +16,7 @@
 #include "meshprep/quality/face_edges.h"
 #include "meshprep/quality/self_intersections.h"
 #include "meshprep/quality/surface_distance.h"
+#include "meshprep/quality/topology.h"
 
 #include <array>
 #include <chrono>
@@ -152,6 +153,14 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
       result.free_of_self_intersections = left == 0;
       if (left > 0)
         envelope_reason = "the exact cut left " + std::to_string(left) + " pairs of faces crossing";
+    }
+    // A closed surface cut must stay closed; where pieces faced both ways were dropped on
+    // coplanar faces flush only to rounding (a rotated part's), it can come out cracked.
+    if (fallback && envelope_reason.empty() && crossing.cut_faces > 0) {
+      const Topology cut = analyze_topology(surface);
+      if (!cut.closed || !cut.manifold)
+        envelope_reason = "the exact cut left " + std::to_string(cut.border_edges + cut.non_manifold_edges) +
+                          " edges open or non-manifold";
     }
   }
   if (!envelope_reason.empty()) {

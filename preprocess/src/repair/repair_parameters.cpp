@@ -39,11 +39,12 @@ const RepairParameters& repair_parameters() {
        {}},
       // 128: a cell of 1/128 of the longest side, about 4e-3 of a cube's diagonal; the vertices
       // lie on the input, so what moves is the faces between them at sharp edges (a chamfer under
-      // half a cell). Time and memory grow with the cube of it.
+      // half a cell). Time and memory grow with the cube of it: 512 holds 5 bytes for each of
+      // 1.4e8 grid points, and the grid's surface of several million faces is simplified after.
       {"envelope_cells", "--envelope-cells",
        "cells of the envelope route's grid across the surface's longest side (finer: closer to the input, slower "
        "by the cube)",
-       {8, 1024}}};
+       {8, 512}}};
   return parameters;
 }
 

@@ -9,7 +9,7 @@
 
 namespace meshprep {
 
-/// repair(surface, params) with the fidelity bound set to the enhancement's
+/// repair(surface, params) with the fidelity bound, unless given, set to the enhancement's
 /// (EnhanceParams::kLargestAutoDeviation: the envelope lists the places farther than it); if the
 /// envelope route ran, its surface is then simplified with simplify.h's guards (topology, no
 /// crossing made, no angle under its floor made) towards the input's face count, each collapse's

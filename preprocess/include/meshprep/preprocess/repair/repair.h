@@ -74,7 +74,8 @@ struct RepairParams {
   /// The envelope route's grid: cells across the longest side of the bounding box.
   std::size_t envelope_cells = 128;
   /// The envelope route lists the places where its surface lies farther from the input than this
-  /// fraction of the diagonal (no parameter of its own: repair_solid.h passes the enhancement's).
+  /// fraction of the diagonal (no parameter of its own: repair_solid.h passes the enhancement's,
+  /// the pipeline its enhance.max_deviation).
   double fidelity_bound = 0;
   /// Optional, asked between the steps and between the self-intersection step's passes; true:
   /// throw Cancelled (the surface is then partly repaired: repair a copy to keep the input).
