@@ -10,9 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <unordered_map>
-#include <utility>
 
 namespace meshprep::detail {
 
