@@ -52,7 +52,7 @@ RepairEnvelope rebuild_on_envelope(TriangleSoup& surface, const TriangleSoup& so
   envelope.bound = params.fidelity_bound;
   detail::EnvelopeSurface rebuilt = detail::envelope_surface(soup, params.envelope_cells, poll);
   if (rebuilt.surface.triangles.empty())
-    throw SolverError("repair: the envelope route found no point of a " + std::to_string(params.envelope_cells) +
+    throw InvalidInput("repair: the envelope route found no point of a " + std::to_string(params.envelope_cells) +
                       "-cell grid inside the surface (it encloses nothing thicker than a cell: give more "
                       "--envelope-cells); nothing is written");
   envelope.cell = rebuilt.cell;

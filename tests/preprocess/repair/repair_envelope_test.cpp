@@ -150,6 +150,16 @@ TEST(RepairEnvelope, EachFaceTakesThePatchOfTheNearestInputFace) {
   EXPECT_GT(top_faces, 0u);
 }
 
+TEST(RepairEnvelope, ASoupEnclosingNothingIsRefusedAsBadInput) {
+  // A flat square: its winding number is under one half at every grid point (found by the fuzzer).
+  TriangleSoup square;
+  square.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  RepairParams params = envelope_route();
+  params.envelope_cells = 16;
+  EXPECT_THROW(repair(square, params), InvalidInput);
+}
+
 TEST(RepairEnvelope, AGridTooCoarseIsRefused) {
   TriangleSoup soup = cube_and_bar();
   RepairParams params = envelope_route();
