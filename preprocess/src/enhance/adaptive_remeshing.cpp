@@ -25,6 +25,9 @@ constexpr double kCollapseBelow = 4.0 / 5.0;
 constexpr int kMaxSweeps = 10;
 // A move or collapse may turn a face by at most 60 degrees (as the enhancement's other guards).
 constexpr double kMaxTurnCosine = 0.5;
+// The time limit is asked at every this many steps of a sweep (a split, a flip, an edge or vertex
+// visited): a sweep over a large surface takes seconds, the question a function call.
+constexpr std::size_t kStepsBetweenPolls = 256;
 
 Vec3 point(const TriMesh& mesh, VertexHandle v) { return to_eigen(mesh.point(v)); }
 
@@ -49,11 +52,7 @@ class Remesher {
     // 3,900 with the flips).
     for (const auto e : mesh_.edges()) flip_stack_.push_back(e);
     flip_planar_to_delaunay([](EdgeHandle) {});
-    for (std::size_t i = 0; i < rules_.iterations; ++i) {
-      if (rules_.out_of_time && rules_.out_of_time()) {
-        counts_.stopped_by_time = true;
-        break;
-      }
+    for (std::size_t i = 0; i < rules_.iterations && !out_of_time(true); ++i) {
       split_long_edges();
       collapse_short_edges();
       flip_toward_valence_six();
@@ -76,6 +75,14 @@ class Remesher {
 
   void measure_size(VertexHandle v) { mesh_.property(size_, v) = sizing_(point(mesh_, v)); }
 
+  // Whether rules_.out_of_time said stop: asked at every kStepsBetweenPolls-th call, or at once
+  // with `now`. Once it has, every sweep ends at its next step (each step leaves a valid mesh).
+  bool out_of_time(bool now = false) {
+    if (!counts_.stopped_by_time && rules_.out_of_time && (now || ++steps_ % kStepsBetweenPolls == 0))
+      counts_.stopped_by_time = rules_.out_of_time();
+    return counts_.stopped_by_time;
+  }
+
   double gap(const Vec3& p) const { return std::sqrt(constraints_.closest_on_reference(p).squared_distance); }
 
   // Longest first (relative to the target), as Rivara's longest-edge bisection: a needle's long
@@ -96,7 +103,7 @@ class Remesher {
       if (excess > kSplitAbove) queue.push({excess, e.idx()});
     };
     for (const auto e : mesh_.edges()) push(e);
-    while (!queue.empty()) {
+    while (!queue.empty() && !out_of_time()) {
       if (rules_.max_faces > 0 && live_faces() >= rules_.max_faces) {
         counts_.stopped_at_max_faces = true;
         return;
@@ -143,7 +150,7 @@ class Remesher {
   // checked as a flip toward valence 6 checks it). Calls flipped(e) for each flipped edge.
   template <class Flipped>
   void flip_planar_to_delaunay(const Flipped& flipped) {
-    while (!flip_stack_.empty()) {
+    while (!flip_stack_.empty() && !out_of_time()) {
       const EdgeHandle e = flip_stack_.back();
       flip_stack_.pop_back();
       if (mesh_.status(e).deleted() || mesh_.is_boundary(e) || constraints_.is_feature(e) || !mesh_.is_flip_ok(e)) continue;
@@ -170,7 +177,7 @@ class Remesher {
   void collapse_short_edges() {
     for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
       std::size_t collapses = 0;
-      for (std::size_t i = 0; i < mesh_.n_edges(); ++i) {
+      for (std::size_t i = 0; i < mesh_.n_edges() && !out_of_time(); ++i) {
         const EdgeHandle e(static_cast<int>(i));
         if (mesh_.status(e).deleted() || mesh_.calc_edge_length(e) >= kCollapseBelow * target(e)) continue;
         for (int side : {0, 1}) {
@@ -224,6 +231,7 @@ class Remesher {
 
   void flip_toward_valence_six() {
     for (const auto e : mesh_.edges()) {
+      if (out_of_time()) return;
       if (mesh_.is_boundary(e) || constraints_.is_feature(e) || !mesh_.is_flip_ok(e)) continue;
       const HalfedgeHandle h0 = mesh_.halfedge_handle(e, 0), h1 = mesh_.halfedge_handle(e, 1);
       const VertexHandle va = mesh_.from_vertex_handle(h0), vb = mesh_.to_vertex_handle(h0);
@@ -257,6 +265,7 @@ class Remesher {
   // edge's midpoint beyond the bound is not made.
   void relax_tangentially() {
     for (const auto v : mesh_.vertices()) {
+      if (out_of_time()) return;
       const VertexRole role = constraints_.role(v);
       if (role == VertexRole::Fixed) continue;
       const Vec3 x = point(mesh_, v);
@@ -317,6 +326,7 @@ class Remesher {
   OpenMesh::VPropHandleT<double> size_;
   RemeshCounts counts_;
   std::size_t faces_at_start_ = 0;
+  std::size_t steps_ = 0;  // out_of_time's count
   std::vector<EdgeHandle> flip_stack_;  // flip_planar_to_delaunay's work, kept between splits
 };
 

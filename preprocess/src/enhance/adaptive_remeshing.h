@@ -24,7 +24,7 @@ struct RemeshRules {
   double max_deviation = 0;
   double target_min_angle_deg = 20;  ///< a flip may not make a face's smallest angle worse than this and than it was
   std::size_t max_faces = 0;         ///< the splits stop at this many faces, collapses pending (0: no limit)
-  std::function<bool()> out_of_time; ///< optional, asked before each iteration: true stops the remeshing there
+  std::function<bool()> out_of_time; ///< optional, asked before each iteration and every few hundred steps of its sweeps: true stops the remeshing there
 };
 
 struct RemeshCounts {

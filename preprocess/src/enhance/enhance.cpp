@@ -123,16 +123,21 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   // The estimate can fall short (a thin part's wedges): splits stopped at the limit leave a
   // half-refined surface, so the field is coarsened and the remeshing run again from the input.
   detail::RemeshCounts counts;
-  const auto taken_back = [&](const std::string& guard, const std::string& reason, std::size_t intersections) {
+  // The crossings are counted only where they are the reason: on a remeshing stopped half-way,
+  // whose splits may have piled thousands of faces on one spot, the count could take minutes.
+  const auto taken_back = [&](const std::string& guard, const std::string& reason,
+                              std::optional<std::size_t> intersections) {
     const QualityTail remeshed = detail::measure_tail(mesh, params.target_min_angle_deg);
-    result.taken_back.push_back(
-        {"enhance", guard, "remeshing", 1, reason + "; the input's own faces are enhanced instead",
-         {{"faces", static_cast<double>(mesh.n_faces())},
-          {"faces_below_target_angle", remeshed.under_target_fraction},
-          {"self_intersections", static_cast<double>(intersections)}},
-         {{"faces", static_cast<double>(before.n_faces())},
-          {"faces_below_target_angle", result.before.under_target_fraction},
-          {"self_intersections", static_cast<double>(allowed_intersections)}}});
+    TakenBack record{"enhance", guard, "remeshing", 1, reason + "; the input's own faces are enhanced instead",
+                     {{"faces", static_cast<double>(mesh.n_faces())},
+                      {"faces_below_target_angle", remeshed.under_target_fraction}},
+                     {{"faces", static_cast<double>(before.n_faces())},
+                      {"faces_below_target_angle", result.before.under_target_fraction}}};
+    if (intersections) {
+      record.before.push_back({"self_intersections", static_cast<double>(*intersections)});
+      record.after.push_back({"self_intersections", static_cast<double>(allowed_intersections)});
+    }
+    result.taken_back.push_back(std::move(record));
     mesh = before;
     return false;
   };
@@ -140,15 +145,14 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
     counts = detail::remesh_to_sizing(mesh, constraints, sizing, rules);
     if (counts.stopped_by_time) {
       result.stopped_by_time_limit = true;
-      return taken_back("time limit", "the time limit came before it was done",
-                        find_self_intersections(MeshSoupView(mesh)).count);
+      return taken_back("time limit", "the time limit came before it was done", std::nullopt);
     }
     if (!counts.stopped_at_max_faces) break;
     if (attempt + 1 == kRemeshAttempts)
       return taken_back("face limit",
                         "its splits reached the face limit (" + std::to_string(rules.max_faces) + ") " +
                             std::to_string(kRemeshAttempts) + " times, the sizing field coarsened each time",
-                        find_self_intersections(MeshSoupView(mesh)).count);
+                        std::nullopt);
     mesh = before;
     sizing.coarsen(kCoarsening);
   }
@@ -240,8 +244,14 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
                            : params.time_limit_seconds;
     return limit > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= limit;
   };
-  if (remeshing &&
-      !remesh(mesh, *features, params, max_deviation, diagonal, allowed_intersections, out_of_time, result))
+  // The remeshing comes before the first round: its polls report no progress, but let a stop
+  // requested through the progress callback (Ctrl-C, SIGTERM) end it.
+  const auto remeshing_out_of_time = [&] {
+    if (params.progress) params.progress(0.0);
+    return out_of_time();
+  };
+  if (remeshing && !remesh(mesh, *features, params, max_deviation, diagonal, allowed_intersections,
+                           remeshing_out_of_time, result))
     features.emplace(mesh, surface, params.feature_angle_deg, false);
   detail::SurfaceConstraints& constraints = *features;
   for (const auto v : mesh.vertices()) {

@@ -79,7 +79,7 @@ struct EnhanceParams {
   double time_limit_seconds = kAutomaticTimeLimit;
   /// The whole command's deadline (the pipeline gives the enhancement a share of the time left).
   Deadline deadline;
-  std::function<void(double)> progress; ///< called with the fraction done
+  std::function<void(double)> progress; ///< called with the fraction done (0 every few hundred steps of the remeshing: a stop it throws ends that too)
   EnhanceParams();
 };
 
