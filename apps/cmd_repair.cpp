@@ -55,6 +55,7 @@ Action add_repair_command(CLI::App& app) {
   add_parameter(*cmd, repair_parameters().keep_cavities, o->params.keep_cavities);
   add_choice(*cmd, repair_parameters().route, o->params.route, repair_routes());
   add_parameter(*cmd, repair_parameters().envelope_cells, o->params.envelope_cells);
+  add_parameter(*cmd, repair_parameters().time_limit_seconds, o->params.time_limit_seconds);
   cmd->add_option("--json", o->json, "Write the counts of each step and the readiness as JSON (- for standard output)");
   return [o] { return run_repair(*o); };
 }

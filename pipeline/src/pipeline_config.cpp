@@ -155,7 +155,8 @@ std::vector<Key> repair_keys(PipelineConfig::Repair& r) {
           flag("repair", repair_parameters().keep_cavities, r.params.keep_cavities),
           choice("repair", repair_parameters().route.key, r.params.route, repair_routes(),
                  repair_parameters().route.help),
-          count("repair", repair_parameters().envelope_cells, r.params.envelope_cells)};
+          count("repair", repair_parameters().envelope_cells, r.params.envelope_cells),
+          number("repair", repair_parameters().time_limit_seconds, r.params.time_limit_seconds)};
 }
 
 std::vector<Key> reconstruct_keys(PipelineConfig::Reconstruct& r) {

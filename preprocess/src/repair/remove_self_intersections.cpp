@@ -31,6 +31,9 @@ namespace {
 // 1e-10 of the reach of each other are welded (far below any feature a mesh for analysis holds,
 // far above the rounding).
 constexpr double kWeldReach = 1e-10;
+// The poll (a stop, a budget) is called at each face the exact cut triangulates and at every this
+// many crossing pairs it intersects: each a few microseconds of exact arithmetic.
+constexpr std::size_t kPairsBetweenPolls = 64;
 
 double reach(const TriangleSoup& soup) {
   double largest = 0;
@@ -75,7 +78,8 @@ struct CutSurface {
 };
 
 CutSurface cut_along_intersections(const TriangleSoup& surface,
-                                   const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+                                   const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                                   const std::function<void()>& poll) {
   const std::size_t n = surface.triangles.size();
   std::map<std::size_t, ExactTriangle> exact;
   const auto exact_of = [&](std::size_t f) -> const ExactTriangle& {
@@ -85,7 +89,9 @@ CutSurface cut_along_intersections(const TriangleSoup& surface,
   };
   std::map<std::size_t, std::vector<CutSegment>> cuts;
   std::map<std::size_t, std::vector<std::size_t>> same_facing_coplanar;
+  std::size_t visited = 0;
   for (const auto& [f, g] : pairs) {
+    if (++visited % kPairsBetweenPolls == 0) poll();
     const ExactTriangle &a = exact_of(f), &b = exact_of(g);
     FaceIntersection meet = intersect_faces(a, b);
     if (meet.in_a.empty() && meet.in_b.empty()) continue;
@@ -142,6 +148,7 @@ CutSurface cut_along_intersections(const TriangleSoup& surface,
       continue;
     }
     ++result.cut_faces;
+    poll();  // a face's exact triangulation: the costly unit
     const auto c = cuts.find(f);
     const auto b = boundary_points.find(f);
     const CutFace pieces =
@@ -208,9 +215,11 @@ struct Pass {
 
 // `uses`: sorted_face_edges(surface), or null to sort them here, once past the return for a
 // surface with nothing to judge.
-Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool keep_cavities) {
+Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool keep_cavities,
+              const std::function<void()>& poll) {
   Pass pass;
   const SelfIntersections found = find_self_intersections(surface);
+  poll();
   pass.pairs = found.count;
   UnionFind parts(surface.points.size());
   for (const Triangle& t : surface.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
@@ -240,7 +249,7 @@ Pass one_pass(TriangleSoup& surface, const std::vector<FaceEdge>* uses, bool kee
     if (closed_face(f)) closed_faces.push_back(f);
   const WindingNumber winding_number(surface, std::move(closed_faces));
 
-  CutSurface cut = cut_along_intersections(surface, pairs);
+  CutSurface cut = cut_along_intersections(surface, pairs, poll);
   pass.cut_faces = cut.cut_faces;
   // Nothing cut (no pairs met: parts apart), the cut surface is the surface, its edges sorted.
   const std::vector<std::uint32_t> patch = patches(cut.soup, cut.cut_faces == 0 ? &edges : nullptr);
@@ -310,7 +319,7 @@ SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const st
   for (int round = 0; round < 3; ++round) {
     poll();
     // Every pass after the first looks at a surface the one before changed.
-    const Pass pass = one_pass(surface, round == 0 ? &uses : nullptr, keep_cavities);
+    const Pass pass = one_pass(surface, round == 0 ? &uses : nullptr, keep_cavities, poll);
     if (round == 0) counts.intersecting_pairs = pass.pairs;
     if (pass.cut_faces == 0 && pass.removed_faces == 0 && pass.cavities == 0) {
       counts.found_none = pass.pairs == 0;

@@ -31,7 +31,7 @@ struct SelfIntersectionCounts {
 /// Where the union's parts touch at a point or along an edge, they are held apart by a hair
 /// (separate_pinches.h). The output's new points are the exact ones rounded to doubles; if that rounding makes faces
 /// cross again, the pass runs again on the result (at most three passes). `uses` is
-/// sorted_face_edges(surface), for the first pass; `poll` is called before each pass (it may throw).
+/// sorted_face_edges(surface), for the first pass; `poll` is called before each pass and often within one (at each face it cuts; it may throw).
 /// \pre consistently oriented, closed components outward (orient_components)
 SelfIntersectionCounts remove_self_intersections(TriangleSoup& surface, const std::vector<FaceEdge>& uses,
                                                  bool keep_cavities, const std::function<void()>& poll);

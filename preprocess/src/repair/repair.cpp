@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,11 +79,17 @@ RepairEnvelope rebuild_on_envelope(TriangleSoup& surface, const TriangleSoup& so
 
 }  // namespace
 
+double automatic_repair_time_limit(std::size_t faces) {
+  return kAutomaticTimeLimitScale *
+         (kRepairTimeLimitFloorSeconds + kRepairTimeLimitPerFaceSeconds * static_cast<double>(faces));
+}
+
 RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (!(params.weld_tolerance >= 0 && std::isfinite(params.weld_tolerance)))
     throw InvalidInput("repair: the weld tolerance must be a finite number >= 0");
   if (params.max_hole) check_parameter("repair", repair_parameters().max_hole, *params.max_hole);
   check_parameter("repair", repair_parameters().envelope_cells, static_cast<double>(params.envelope_cells));
+  check_parameter("repair", repair_parameters().time_limit_seconds, params.time_limit_seconds);
   const auto start = std::chrono::steady_clock::now();
   const auto poll = [&params] {
     if (params.cancelled && params.cancelled()) throw Cancelled("repair stopped");
@@ -129,16 +136,33 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   if (result.filled_holes > 0) uses = sorted_face_edges(surface);
   std::string envelope_reason;
   TriangleSoup before_cut;
+  // The envelope needs a closed surface to tell inside from outside: with a hole left open (a
+  // sheet's outline) the exact route's result stands, whatever it left.
+  const bool fallback = params.route == RepairRoute::automatic && result.open_holes == 0;
+  std::optional<detail::SelfIntersectionCounts> cut;
   if (params.route == RepairRoute::envelope) {
     envelope_reason = "asked (route envelope)";
     before_cut = surface;
   } else {
-    // The envelope needs a closed surface to tell inside from outside: with a hole left open (a
-    // sheet's outline) the exact route's result stands, whatever it left.
-    const bool fallback = params.route == RepairRoute::automatic && result.open_holes == 0;
     if (fallback) before_cut = surface;
-    const detail::SelfIntersectionCounts crossing =
-        detail::remove_self_intersections(surface, uses, params.keep_cavities, poll);
+    const double limit = !fallback                                         ? 0
+                         : params.time_limit_seconds == kAutomaticTimeLimit ? automatic_repair_time_limit(input_faces)
+                                                                            : params.time_limit_seconds;
+    struct PastTheLimit {};
+    const auto poll_and_time = [&] {
+      poll();
+      if (limit > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= limit)
+        throw PastTheLimit{};
+    };
+    try {
+      cut = detail::remove_self_intersections(surface, uses, params.keep_cavities, poll_and_time);
+    } catch (const PastTheLimit&) {
+      surface = before_cut;
+      envelope_reason = "the exact cut was not done " + parameter_text(limit) + " s after the repair began";
+    }
+  }
+  if (cut) {
+    const detail::SelfIntersectionCounts& crossing = *cut;
     result.intersecting_pairs = crossing.intersecting_pairs;
     result.cut_faces = crossing.cut_faces;
     result.removed_faces = crossing.removed_faces;
@@ -157,9 +181,9 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
     // A closed surface cut must stay closed; where pieces faced both ways were dropped on
     // coplanar faces flush only to rounding (a rotated part's), it can come out cracked.
     if (fallback && envelope_reason.empty() && crossing.cut_faces > 0) {
-      const Topology cut = analyze_topology(surface);
-      if (!cut.closed || !cut.manifold)
-        envelope_reason = "the exact cut left " + std::to_string(cut.border_edges + cut.non_manifold_edges) +
+      const Topology after = analyze_topology(surface);
+      if (!after.closed || !after.manifold)
+        envelope_reason = "the exact cut left " + std::to_string(after.border_edges + after.non_manifold_edges) +
                           " edges open or non-manifold";
     }
   }

@@ -35,7 +35,7 @@ const RepairParameters& repair_parameters() {
       {"route", "--route",
        "how crossing faces are mended: exact (cut along the crossings, keep the union's faces: the surface does not "
        "move), envelope (the solid rebuilt on a grid from the winding number: always a valid solid, moved by up to "
-       "about a cell), auto (exact, and envelope where the exact cut leaves crossings)",
+       "about a cell), auto (exact, and envelope where the exact cut leaves crossings or is not done within the time limit)",
        {}},
       // 128: a cell of 1/128 of the longest side, about 4e-3 of a cube's diagonal; the vertices
       // lie on the input, so what moves is the faces between them at sharp edges (a chamfer under
@@ -44,7 +44,12 @@ const RepairParameters& repair_parameters() {
       {"envelope_cells", "--envelope-cells",
        "cells of the envelope route's grid across the surface's longest side (finer: closer to the input, slower "
        "by the cube)",
-       {8, 512}}};
+       {8, 512}},
+      {"time_limit_seconds", "--repair-time-limit",
+       "with route auto, the exact cut must be done this many seconds after the repair began, or the envelope "
+       "route rebuilds the solid instead; -1 = automatic, " + parameter_text(kRepairTimeLimitFloorSeconds) + " s + " +
+           parameter_text(kRepairTimeLimitPerFaceSeconds * 1e3) + " ms per face; 0 = no limit",
+       {-1, inf, false, true}}};
   return parameters;
 }
 

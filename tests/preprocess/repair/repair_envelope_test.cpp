@@ -124,6 +124,33 @@ TEST(RepairEnvelope, TheExactRouteNeverRebuilds) {
   EXPECT_EQ(repair(soup, params).route, "exact");
 }
 
+TEST(RepairEnvelope, TheAutomaticRouteRebuildsWhenTheExactCutIsPastTheTimeLimit) {
+  // A limit already passed when the cut asks the clock first (before its first pass): the
+  // envelope takes over from the surface as it was before the cut, and says why. The exact route
+  // asked for has no limit of its own: it cuts.
+  TriangleSoup soup = cube_and_bar();
+  RepairParams params = envelope_route();
+  params.route = RepairRoute::automatic;
+  params.time_limit_seconds = 1e-9;
+  const RepairResult r = repair(soup, params);
+  EXPECT_EQ(r.route, "envelope");
+  ASSERT_TRUE(r.envelope.has_value());
+  EXPECT_NE(r.envelope->reason.find("exact cut was not done"), std::string::npos) << r.envelope->reason;
+  EXPECT_EQ(r.cut_faces, 0u);
+  const Topology topology = analyze_topology(soup);
+  EXPECT_TRUE(topology.closed && topology.manifold);
+  EXPECT_EQ(find_self_intersections(soup).count, 0u);
+  EXPECT_NEAR(signed_volume(soup), kUnionVolume, kUnionArea * std::sqrt(3.0) * r.envelope->cell);
+
+  TriangleSoup exact = cube_and_bar();
+  params.route = RepairRoute::exact;
+  EXPECT_EQ(repair(exact, params).route, "exact");
+  EXPECT_NEAR(signed_volume(exact), kUnionVolume, 1e-12);
+
+  params.time_limit_seconds = -2;
+  EXPECT_THROW(repair(exact, params), InvalidInput);
+}
+
 TEST(RepairEnvelope, EachFaceTakesThePatchOfTheNearestInputFace) {
   TriangleSoup input = test::box({0, 0, 0}, {1, 1, 1});
   input.patches.assign(input.triangles.size(), 1);

@@ -39,10 +39,12 @@
 ///    of envelope_cells across the longest side (envelope_surface.h, after fTetWild's inside test,
 ///    Hu et al. 2020). Always closed, manifold and free of crossings; its vertices lie on the input,
 ///    its faces within about half a cell of it, and the distance both ways is measured and reported,
-///    with the places farther than the fidelity bound.
+///    with the places farther than the fidelity bound. On the automatic route it also takes over
+///    when the exact cut runs past the repair's time limit.
 /// The caller checks the result (fem's check_fem_readiness) and refuses what is left. A repair
 /// that would leave no face throws InvalidInput, naming what it removed.
 
+#include "meshprep/core/deadline.h"
 #include "meshprep/core/mesh.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -57,6 +59,14 @@ namespace meshprep {
 
 /// How crossing faces are mended (step 6 or 7).
 enum class RepairRoute { automatic, exact, envelope };
+
+/// The automatic time limit: the exact cut measured about 6 us per face (two overlapping bunnies,
+/// 150,000 faces, 0.9 s), so the per-face share leaves it more than ten times that, and the floor
+/// the small parts' fixed costs.
+inline constexpr double kRepairTimeLimitFloorSeconds = 10;
+inline constexpr double kRepairTimeLimitPerFaceSeconds = 1e-4;
+/// kRepairTimeLimitFloorSeconds + kRepairTimeLimitPerFaceSeconds * faces (times kAutomaticTimeLimitScale).
+double automatic_repair_time_limit(std::size_t faces);
 
 struct RepairParams {
   /// Vertices closer than this fraction of the median edge length are welded. A file that splits
@@ -77,6 +87,10 @@ struct RepairParams {
   /// fraction of the diagonal (no parameter of its own: repair_solid.h passes the enhancement's,
   /// the pipeline its enhance.max_deviation).
   double fidelity_bound = 0;
+  /// On the automatic route, seconds from the repair's start by which the exact cut must be done,
+  /// or the envelope route rebuilds the solid instead (the exact route's cut has no limit but the
+  /// command's); kAutomaticTimeLimit: automatic_repair_time_limit of the input's faces; 0: none.
+  double time_limit_seconds = kAutomaticTimeLimit;
   /// Optional, asked between the steps and between the self-intersection step's passes; true:
   /// throw Cancelled (the surface is then partly repaired: repair a copy to keep the input).
   std::function<bool()> cancelled;

@@ -14,6 +14,7 @@ struct RepairParameters {
   ParameterInfo keep_cavities;
   ParameterInfo route;
   ParameterInfo envelope_cells;
+  ParameterInfo time_limit_seconds;
 };
 
 const RepairParameters& repair_parameters();
