@@ -91,6 +91,11 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
   check_parameter("repair", repair_parameters().envelope_cells, static_cast<double>(params.envelope_cells));
   check_parameter("repair", repair_parameters().time_limit_seconds, params.time_limit_seconds);
   const auto start = std::chrono::steady_clock::now();
+  // The exact cut's limit counts from the repair's start (used on the automatic route only).
+  const double cut_limit = params.time_limit_seconds == kAutomaticTimeLimit
+                               ? automatic_repair_time_limit(surface.triangles.size())
+                               : params.time_limit_seconds;
+  const Deadline cut_deadline = Deadline::in_seconds(cut_limit);
   const auto poll = [&params] {
     if (params.cancelled && params.cancelled()) throw Cancelled("repair stopped");
   };
@@ -145,20 +150,16 @@ RepairResult repair(TriangleSoup& surface, const RepairParams& params) {
     before_cut = surface;
   } else {
     if (fallback) before_cut = surface;
-    const double limit = !fallback                                         ? 0
-                         : params.time_limit_seconds == kAutomaticTimeLimit ? automatic_repair_time_limit(input_faces)
-                                                                            : params.time_limit_seconds;
     struct PastTheLimit {};
     const auto poll_and_time = [&] {
       poll();
-      if (limit > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= limit)
-        throw PastTheLimit{};
+      if (fallback && cut_deadline.passed()) throw PastTheLimit{};
     };
     try {
       cut = detail::remove_self_intersections(surface, uses, params.keep_cavities, poll_and_time);
     } catch (const PastTheLimit&) {
       surface = before_cut;
-      envelope_reason = "the exact cut was not done " + parameter_text(limit) + " s after the repair began";
+      envelope_reason = "the exact cut was not done " + parameter_text(cut_limit) + " s after the repair began";
     }
   }
   if (cut) {
