@@ -5,6 +5,7 @@
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/core/size_parameters.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/solver_targets.h"
 #include "meshprep/fem/tet_quality.h"
@@ -235,6 +236,41 @@ void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off
   add_override(cmd, p.goal_min_dihedral_deg, flags.goal_min_dihedral_deg, defaults.goal_min_dihedral_deg);
   add_override(cmd, p.goal_max_dihedral_deg, flags.goal_max_dihedral_deg, defaults.goal_max_dihedral_deg);
   add_override(cmd, p.time_limit_seconds, flags.time_limit_seconds, defaults.time_limit_seconds);
+}
+
+SizeParams SizeFlags::applied_to(SizeParams params) const {
+  if (given.size) params.size = given.size;
+  if (given.size_min) params.size_min = given.size_min;
+  if (given.size_max) params.size_max = given.size_max;
+  if (given.curvature_points) params.curvature_points = given.curvature_points;
+  if (given.thickness_layers) params.thickness_layers = given.thickness_layers;
+  if (given.grading) params.grading = given.grading;
+  return params;
+}
+
+void add_size_options(CLI::App& cmd, SizeFlags& flags) {
+  const SizeParameters& p = size_parameters();
+  for (const auto& [info, field] : {std::pair{&p.size, &flags.given.size}, {&p.size_min, &flags.given.size_min},
+                                    {&p.size_max, &flags.given.size_max}}) {
+    std::optional<Length>* target = field;
+    const std::string key = info->key;
+    cmd.add_option_function<std::string>(
+           info->flag, [target, key](const std::string& text) { *target = parse_length(text, "--" + key); },
+           capitalised(info->help))
+        ->check(CLI::Validator(
+            [key](std::string& text) {
+              try {
+                parse_length(text, key);
+                return std::string();
+              } catch (const InvalidInput&) {
+                return "expected a positive length or a percentage of the diagonal such as 2%, not '" + text + "'";
+              }
+            },
+            "LENGTH|N%"));
+  }
+  add_auto_parameter(cmd, p.grading, flags.given.grading);
+  add_auto_parameter(cmd, p.curvature_points, flags.given.curvature_points);
+  add_auto_parameter(cmd, p.thickness_layers, flags.given.thickness_layers);
 }
 
 void print_failed_thresholds(const std::string& input, const std::vector<ThresholdCheck>& checks,

@@ -4,6 +4,7 @@
 #include "meshprep/commands/outcome.h"
 #include "meshprep/core/exit_codes.h"
 #include "meshprep/core/io.h"
+#include "meshprep/core/size_field.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/fem_verdict.h"
@@ -129,6 +130,17 @@ struct ImproveFlags {
 /// Registers --goal-min-dihedral, --goal-max-dihedral and --improve-time-limit on `cmd`, and
 /// --no-improve when `can_switch_off`, bound to `flags`; the help gives ImproveParams' defaults.
 void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off);
+
+/// The size field's flags (--size, --size-min, --size-max, --grading, --curvature-points,
+/// --thickness-layers), each set only when given (the defaults stay SizeParams').
+struct SizeFlags {
+  SizeParams given;  ///< the fields that were given
+  /// `params` with the flags that were given.
+  SizeParams applied_to(SizeParams params) const;
+};
+
+/// Registers the size field's flags on `cmd`, bound to `flags`.
+void add_size_options(CLI::App& cmd, SizeFlags& flags);
 
 /// Prints "meshprep: INPUT: not FEM-ready: <describe(check)>" to stderr for every failed check,
 /// with what the surface allows (surface_limit_note) when `improvement` says it forbids the check.

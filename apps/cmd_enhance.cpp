@@ -1,5 +1,6 @@
 // meshprep enhance IN -o OUT [--reference ORIGINAL] [--iterations K] [--max-deviation E]
-//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--enhance-time-limit S] [--threads N]
+//   [--target-min-angle DEG] [--feature-angle DEG] [--flips | --no-flips] [--enhance-time-limit S]
+//   [--size H] [--size-min H] [--size-max H] [--grading G] [--curvature-points N] [--thickness-layers K] [--threads N]
 //   [--json FILE|-]
 #include "cli_common.h"
 #include "cli_parameters.h"
@@ -22,6 +23,7 @@ namespace {
 struct EnhanceOptions {
   std::string input, output, reference, json;
   EnhanceCommand command;
+  SizeFlags size;
   std::size_t threads = 0;
 };
 
@@ -32,8 +34,10 @@ int run_enhance(const EnhanceOptions& o) {
   require_all_faces(input, "enhancement");
   const std::optional<TriangleSoup> reference = o.reference.empty() ? std::nullopt : std::optional(read_soup(o.reference));
   ProgressBar bar("enhance");
+  EnhanceCommand command = o.command;
+  command.params.size = o.size.applied_to(command.params.size);
   const EnhanceOutcome outcome =
-      enhance_command(std::move(input), reference ? &*reference : nullptr, o.reference, o.command, {o.input, o.output},
+      enhance_command(std::move(input), reference ? &*reference : nullptr, o.reference, command, {o.input, o.output},
                       terminal_hooks([&bar](double f) { bar.update(f); }));
   bar.finish();
   write_soup(outcome.surface, o.output);
@@ -74,6 +78,7 @@ Action add_enhance_command(CLI::App& app) {
   add_choice(*cmd, p.remesh, o->command.params.remesh, enhance_remesh_modes());
   add_parameter(*cmd, p.max_faces, o->command.params.max_faces);
   add_parameter(*cmd, p.time_limit_seconds, o->command.params.time_limit_seconds);
+  add_size_options(*cmd, o->size);
   add_samples_option(*cmd, o->command.quality.distance_samples);
   add_threads_option(*cmd, o->threads);
   cmd->add_option("--json", o->json, "Write the results and the quality of the output (against the reference) as JSON");

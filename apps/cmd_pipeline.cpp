@@ -1,5 +1,6 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
 //   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2] [--binary | --ascii] [--order 1|2]
+//   [--size H] [--size-min H] [--size-max H] [--grading G] [--curvature-points N] [--thickness-layers K]
 //   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--time-limit S] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
@@ -34,6 +35,7 @@ struct PipelineOptions {
   std::string input, outdir, config, json, format, msh_version, fail_on;
   ThresholdFlags thresholds;
   ImproveFlags improve;
+  SizeFlags size;
   ElementOrderParams element_order;         ///< --order, over the configuration file's when given
   const CLI::Option* order_flag = nullptr;  ///< whether --order was given
   PatchParams patch_edits;  ///< --rename and --merge, after the configuration file's
@@ -64,6 +66,7 @@ PipelineConfig effective_config(const PipelineOptions& o) {
   if (o.order_flag != nullptr && o.order_flag->count() > 0) config.tetrahedralize.element_order = o.element_order;
   config.verdict = o.thresholds.applied_to(config.verdict);
   config.improve.params = o.improve.applied_to(config.improve.params);
+  config.size = o.size.applied_to(config.size);
   if (o.improve.off) config.improve.enabled = false;
   PatchParams& patches = config.patches.params;
   patches.merges.insert(patches.merges.end(), o.patch_edits.merges.begin(), o.patch_edits.merges.end());
@@ -255,6 +258,7 @@ Action add_pipeline_command(CLI::App& app) {
   add_encoding_options(*cmd, o->encoding, "Binary msh (vtu is binary unless --ascii, xdmf always)");
   o->order_flag = add_order_option(*cmd, o->element_order);
   add_patch_edits(*cmd, o->patch_edits);
+  add_size_options(*cmd, o->size);
   add_improve_options(*cmd, o->improve, /*can_switch_off=*/true);
   add_threshold_options(*cmd, o->thresholds);
   cmd->add_option("--fail-on", o->fail_on,

@@ -1,6 +1,7 @@
 // meshprep tetrahedralize SURFACE -o OUT [--radius-edge R] [--min-dihedral DEG]
 //   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary | --ascii]
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
+//   [--size H] [--size-min H] [--size-max H] [--grading G] [--curvature-points N] [--thickness-layers K]
 //   [--fem-check] [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--time-limit S] [--threads N] [--order 1|2] [--json FILE|-]
@@ -40,6 +41,7 @@ struct TetOptions {
   TetrahedralizeCommand command;  ///< its improvement's goals and thresholds come from the flags below
   ThresholdFlags thresholds;
   ImproveFlags improve;
+  SizeFlags size;
   EncodingFlags encoding;
   std::size_t threads = 0;
 };
@@ -68,6 +70,7 @@ int run_tetrahedralize(const TetOptions& o) {
   TetrahedralizeCommand command = o.command;
   command.finishing.improve = !o.improve.off;
   command.finishing.improve_params = o.improve.applied_to({});
+  command.size = o.size.applied_to({});
   command.finishing.thresholds = o.thresholds.applied_to({});
   TetOutcome outcome;
   try {
@@ -126,6 +129,7 @@ Action add_tetrahedralize_command(CLI::App& app) {
                          ->check(positive());
   add_parameter(*cmd, p.max_volume_relative, o->command.params.max_volume_relative)->excludes(abs_volume);
   add_parameter(*cmd, p.keep_surface, o->command.params.keep_surface);
+  add_size_options(*cmd, o->size);
   cmd->add_option("--msh-version", o->msh_version, "Gmsh format version for .msh")
       ->check(CLI::IsMember({"4.1", "2.2"}))
       ->capture_default_str();

@@ -104,11 +104,37 @@ TEST(PipelineConfig, RepairIsOffByDefaultAndReadsItsTolerance) {
 
 TEST(PipelineConfig, UnknownSectionsAndKeysNameTheValidOnes) {
   EXPECT_EQ(error_of(Json::parse(R"({"simplfy": {}})")),
-            "c.json: unknown section 'simplfy'; valid sections: repair, reconstruct, patches, simplify, smooth, enhance, "
+            "c.json: unknown section 'simplfy'; valid sections: repair, reconstruct, patches, simplify, smooth, size, enhance, "
             "knife_edges, quality, tetrahedralize, improve, verdict");
   const std::string key = error_of(Json::parse(R"({"simplify": {"ratoi": 0.5}})"));
   EXPECT_EQ(key.rfind("c.json: unknown key 'simplify.ratoi'; valid keys of simplify: enabled, ratio, target_faces", 0), 0u)
       << key;
+}
+
+// Lengths are absolute numbers or percentages of the diagonal; unset is "auto".
+TEST(PipelineConfig, SizesAreLengthsOrPercentagesAndReadBack) {
+  PipelineConfig changed;
+  apply_config(Json::parse(R"({"size": {"size": "2%", "size_min": 0.5, "grading": 1.2, "curvature_points": 12}})"),
+               "c.json", changed);
+  ASSERT_TRUE(changed.size.size && changed.size.size_min);
+  EXPECT_TRUE(changed.size.size->relative);
+  EXPECT_DOUBLE_EQ(changed.size.size->value, 0.02);
+  EXPECT_FALSE(changed.size.size_min->relative);
+  EXPECT_EQ(*changed.size.grading, 1.2);
+  EXPECT_EQ(*changed.size.curvature_points, 12.0);
+  EXPECT_FALSE(changed.size.size_max);
+  const nlohmann::ordered_json written = to_json(changed);
+  EXPECT_EQ(written["size"]["size"], "2%");
+  EXPECT_EQ(written["size"]["size_max"], "auto");
+  PipelineConfig again;
+  apply_config(Json::parse(written.dump()), "again.json", again);
+  EXPECT_EQ(to_json(again), written);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"size": "big"}})")).find("size.size: expected a positive number, \"N%\""),
+            std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"size": -1}})")).find("size.size: expected"), std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"grading": 0.9}})")).find("size.grading"), std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"size_min": 2, "size_max": 1}})")).find("size_min (2) is over size_max (1)"),
+            std::string::npos);
 }
 
 TEST(PipelineConfig, ValuesOfTheWrongTypeOrRangeAreRefusedWithTheKey) {

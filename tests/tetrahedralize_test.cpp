@@ -1,5 +1,6 @@
 #include "meshprep/fem/extrude.h"
 #include "meshprep/fem/readiness.h"
+#include "meshprep/fem/size_conformity.h"
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/fem/tetrahedralize.h"
 
@@ -262,3 +263,37 @@ TEST(Extrude, RefusesWhatIsNotAHeightField) {
   EXPECT_THROW(extrude_to_block(folded, 1.0), InvalidInput);
   EXPECT_THROW(extrude_to_block(test::grid(3), 0.0), InvalidInput);
 }
+
+namespace meshprep {
+namespace {
+
+// TetGen's -m with sizes kTetgenSizePerLength x h: it splits while half the longest edge at a
+// vertex exceeds that vertex's size, so no edge ends longer than 2 x share x h (boundary edges
+// included: without -Y they are split too); and the edges centre on h (the band of issue 49).
+TEST(Tetrahedralize, ASizeFieldSetsTheEdgeLengths) {
+  const double h = 0.1;
+  TetParams params;
+  params.size_field = std::make_shared<SizeField>(std::vector<SizeDemand>{}, h, 1.3);
+  const SurfacePlc plc = plc_from_surface(test::cube(1.0));
+  const TetMesh tets = tetrahedralize_plc(plc, params);
+  EXPECT_NE(tetgen_switches(params, 1.0).find('m'), std::string::npos);
+  const SizeConformity c = measure_size_conformity(tets, *params.size_field);
+  EXPECT_LE(c.ratio_p99 * h, 2 * kTetgenSizePerLength * h * (1 + 1e-9));
+  EXPECT_GE(c.within_band, 0.9) << "median " << c.ratio_median << " p05 " << c.ratio_p05 << " p95 " << c.ratio_p95;
+  // Without a field TetGen keeps the cube's few points: the field is what made the tets.
+  EXPECT_LT(tetrahedralize_plc(plc, TetParams()).tets.size() * 50, tets.tets.size());
+}
+
+// A field twice as fine near one corner: the tets there are smaller, and their size jumps
+// between neighbours no more than the grading allows, give or take TetGen's own spread.
+TEST(Tetrahedralize, TetsFollowAGradedField) {
+  TetParams params;
+  params.size_field = std::make_shared<SizeField>(std::vector<SizeDemand>{{Vec3(0, 0, 0), 0.05}}, 0.2, 1.3);
+  const TetMesh tets = tetrahedralize_plc(plc_from_surface(test::cube(1.0)), params);
+  const SizeConformity c = measure_size_conformity(tets, *params.size_field);
+  EXPECT_GE(c.within_band, 0.8) << "median " << c.ratio_median << " p05 " << c.ratio_p05 << " p95 " << c.ratio_p95;
+  EXPECT_LE(c.grading_excess_p99, 1.5);
+}
+
+}  // namespace
+}  // namespace meshprep

@@ -1,6 +1,8 @@
 #include "meshprep/commands/tet_commands.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/size_parameters.h"
+#include "meshprep/fem/size_conformity.h"
 #include "meshprep/fem/fem_check.h"
 #include "meshprep/fem/prepare_plc.h"
 #include "meshprep/fem/tet_boundary.h"
@@ -63,6 +65,7 @@ std::string readiness_failure(const Readiness& readiness) {
 TetOutcome tetrahedralize_command(const TriangleSoup& surface, const TetrahedralizeCommand& command,
                                   const CommandNames& names, const CommandHooks& hooks) {
   check_tet_params(command.params);  // a bound TetGen cannot meet is bad usage, whatever the surface
+  check_size_params(command.size);
   check_improve_params(command.finishing.improve_params);
   check_thresholds(command.finishing.thresholds);
   TetOutcome outcome;
@@ -102,7 +105,6 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
     if (prepared.flipped_inward) json["flipped_inward_orientation"] = true;
   }
   const SurfacePlc plc = std::move(*prepared.plc);
-  json["switches"] = tetgen_switches(command.params, 0);
 
   hooks.announce("tetrahedralizing " + std::to_string(plc.facets.size()) + " facets with TetGen ...");
   const auto start = std::chrono::steady_clock::now();
@@ -111,6 +113,8 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
   const CommandHooks bounded = hooks.until_deadline();
   TetParams params = command.params;
   params.cancelled = bounded.cancelled;
+  if (command.size.any_set()) params.size_field = uniform_size_field(command.size, bbox_diagonal(soup));
+  json["switches"] = tetgen_switches(params, 0);
   try {
     outcome.tets = tetrahedralize_plc(plc, params);
   } catch (const TetgenError& e) {
@@ -136,6 +140,8 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
       json["fem_check"] = to_json(run_fem_check(outcome.tets));
     }
   });
+  // The final tets against the field they were made to (the improvement moves and adds points).
+  if (params.size_field) json["size_conformity"] = to_json(measure_size_conformity(outcome.tets, *params.size_field));
   refuse_flat_tets(outcome.tets, names);
   return outcome;
 }

@@ -85,6 +85,8 @@ class Run {
     } catch (const SolverError& e) {  // a stage could not do its work on this input: name the file
       throw PipelineFailed(result_.input + ": " + e.what());
     }
+    if (result_.tets && result_.size_field)
+      result_.size_conformity = measure_size_conformity(*result_.tets, *result_.size_field);
     deliver_verdict();  // judges the final tets: a stage that changes them goes before it
     result_.seconds = seconds_since(start);
     return std::move(result_);
@@ -426,12 +428,14 @@ class Run {
     if (!config_.enhance.enabled) return skip("enhance", "switched off");
     StageRecord record = started("enhance");
     EnhanceParams params = config_.enhance.params;
+    params.size = config_.size;
     params.progress = progress();
     // Anytime: it ends with its best rounds at its own limit or at half the run's time left, so that
     // the report, TetGen and the improvement still have the other half.
     params.deadline = observer_.deadline.share(kEnhanceShareOfTimeLeft);
     const EnhanceResult e = on_input([&] { return enhance(mesh_, &result_.input_surface, params); });
     result_.enhance_stopped_by_time_limit = e.stopped_by_time_limit;
+    if (config_.size.any_set()) result_.size_field = e.size_field;
     record.seconds = e.seconds;
     record.details = picked(to_json(e, params),
                             {"rounds", "kept_round", "flips", "cap_flips", "removed_vertices", "split_edges", "stopped"});
@@ -520,6 +524,9 @@ class Run {
     double volume_change = 0;
     if (std::optional<SurfacePlc> plc = prepare_tet_input(record)) {
       params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
+      if (config_.size.any_set() && !result_.size_field)
+        result_.size_field = uniform_size_field(config_.size, result_.final_quality.bbox_diagonal);
+      params.size_field = result_.size_field;
       params.cancelled = [this] { return stop_or_deadline(); };
       try {
         result_.tets = tetrahedralize_plc(*plc, params);

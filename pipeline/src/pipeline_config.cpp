@@ -4,6 +4,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/core/size_parameters.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/preprocess/enhance/enhance_parameters.h"
 #include "meshprep/preprocess/patches/patches_parameters.h"
@@ -99,6 +100,32 @@ Key number_or_auto(const char* section, const ParameterInfo& info, std::optional
             field = v.get<double>();
           },
           [&field] { return field ? OrderedJson(*field) : OrderedJson("auto"); }};
+}
+
+// A length (core/size_field.h): a positive number, "2%" (of the diagonal), or "auto" (unset).
+Key length_or_auto(const char* section, const ParameterInfo& info, std::optional<Length>& field) {
+  const std::string type = "positive number, \"N%\" (of the diagonal) or \"auto\"";
+  return {section, info.key, type, info.help,
+          [&field, type, key = info.key](const Json& v) {
+            if (v.is_string() && v.get<std::string>() == "auto") {
+              field.reset();
+              return;
+            }
+            if (v.is_number() && v.get<double>() > 0 && std::isfinite(v.get<double>())) {
+              field = Length{v.get<double>(), false};
+              return;
+            }
+            if (!v.is_string()) throw BadValue{"expected a " + type + ", not " + shown(v)};
+            try {
+              field = parse_length(v.get<std::string>(), key);
+            } catch (const InvalidInput&) {
+              throw BadValue{"expected a " + type + ", not " + shown(v)};
+            }
+          },
+          [&field] {
+            if (!field) return OrderedJson("auto");
+            return field->relative ? OrderedJson(length_text(*field)) : OrderedJson(field->value);
+          }};
 }
 
 Key count(const char* section, const ParameterInfo& info, std::size_t& field) {
@@ -293,6 +320,16 @@ std::vector<Key> enhance_keys(PipelineConfig::Enhance& e) {
   return keys;
 }
 
+std::vector<Key> size_keys(SizeParams& s) {
+  const SizeParameters& info = size_parameters();
+  return {length_or_auto("size", info.size, s.size),
+          length_or_auto("size", info.size_min, s.size_min),
+          length_or_auto("size", info.size_max, s.size_max),
+          number_or_auto("size", info.grading, s.grading),
+          number_or_auto("size", info.curvature_points, s.curvature_points),
+          number_or_auto("size", info.thickness_layers, s.thickness_layers)};
+}
+
 std::vector<Key> quality_keys(PipelineConfig::Quality& q) {
   return {count("quality", quality_parameters().distance_samples, q.params.distance_samples)};
 }
@@ -363,7 +400,8 @@ std::vector<Key> verdict_keys(TetThresholds& t) {
 std::vector<std::pair<std::string, std::vector<Key>>> sections(PipelineConfig& c) {
   return {{"repair", repair_keys(c.repair)},           {"reconstruct", reconstruct_keys(c.reconstruct)},
           {"patches", patches_keys(c.patches)},             {"simplify", simplify_keys(c.simplify)},
-          {"smooth", smooth_keys(c.smooth)},                {"enhance", enhance_keys(c.enhance)},
+          {"smooth", smooth_keys(c.smooth)},                {"size", size_keys(c.size)},
+          {"enhance", enhance_keys(c.enhance)},
           {"knife_edges", knife_edges_keys(c.knife_edges)}, {"quality", quality_keys(c.quality)},             {"tetrahedralize", tetrahedralize_keys(c.tetrahedralize)},
           {"improve", improve_keys(c.improve)},             {"verdict", verdict_keys(c.verdict)}};
 }
@@ -413,6 +451,7 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
 }
 
 void check_config(const PipelineConfig& config) {
+  check_size_params(config.size);
   check_enhance_params(config.enhance.params);
   check_tet_params(config.tetrahedralize.params);
   check_improve_params(config.improve.params);

@@ -116,6 +116,7 @@ Json pipeline_summary(const PipelineResult& result, const PipelineConfig& config
   // TetGen's own tets beside the final ones, and what the improvement did and found the surface forbids.
   tets["tetgen_quality"] = result.tetgen_quality ? to_json(*result.tetgen_quality) : Json(nullptr);
   tets["improvement"] = result.improvement ? to_json(*result.improvement) : Json(nullptr);
+  tets["size_conformity"] = result.size_conformity ? to_json(*result.size_conformity) : Json(nullptr);
   tets["order"] = config.tetrahedralize.element_order.order;
   tets["second_order"] = result.second_order ? to_json(*result.second_order) : Json(nullptr);
   json["tets"] = tets;

@@ -62,9 +62,12 @@ void apply_keywords(const Keywords& spec, const py::dict& kwargs, PipelineConfig
     if (contains(spec.sections, name)) {
       nlohmann::json section = json_value(value, name);
       if (section.is_boolean()) section = {{"enabled", section}};
+      // A section with a key of its own name takes a plain value as that key's: size="2%".
+      else if (!section.is_object() && contains(section_keys(name), name)) section = {{name, section}};
       if (!section.is_object())
         throw InvalidInput(origin + ": " + name + " takes a dict of its keys (" + joined(section_keys(name)) + ")" +
-                           (contains(section_keys(name), "enabled") ? " or True/False" : ""));
+                           (contains(section_keys(name), "enabled") ? " or True/False" : "") +
+                           (contains(section_keys(name), name) ? " or the value of " + name + "." + name : ""));
       sections[name].update(section);
     } else if (contains(own_keys, name) && !contains(spec.refused, name)) {
       sections[spec.own][name] = json_value(value, name);

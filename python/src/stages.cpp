@@ -100,14 +100,14 @@ void build_mesh(LoadedMesh& input) { input.mesh = mesh_from_soup(input.soup, &in
 
 const Keywords kSimplify{"simplify", "simplify", {"quality"}, {"enabled"}};
 const Keywords kSmooth{"smooth", "smooth", {"quality"}, {"enabled"}};
-const Keywords kEnhance{"enhance", "enhance", {"quality"}, {"enabled"}};
+const Keywords kEnhance{"enhance", "enhance", {"quality", "size"}, {"enabled"}};
 const Keywords kRepair{"repair", "repair", {}, {"enabled"}};
 const Keywords kReconstruct{"reconstruct", "reconstruct", {}, {}};
 const Keywords kQuality{"quality", "quality", {}, {}};
 const Keywords kTetrahedralize{
-    "tetrahedralize", "tetrahedralize", {"improve", "verdict", "patches"}, {"enabled", "format", "msh_version", "binary", "ascii"}};
+    "tetrahedralize", "tetrahedralize", {"improve", "verdict", "patches", "size"}, {"enabled", "format", "msh_version", "binary", "ascii"}};
 const Keywords kImprove{"improve", "improve", {"verdict"}, {"enabled"}};
-const Keywords kPipeline{"pipeline", "", {"repair", "reconstruct", "patches", "simplify", "smooth", "enhance", "knife_edges", "quality",
+const Keywords kPipeline{"pipeline", "", {"repair", "reconstruct", "patches", "simplify", "smooth", "size", "enhance", "knife_edges", "quality",
                                           "tetrahedralize", "improve", "verdict"}, {}};
 
 // The configuration whose sections hold the standalone commands' defaults (the pipeline's differ:
@@ -167,7 +167,8 @@ py::dict call_enhance(const py::object& surface, const py::object& reference, co
                       const py::object& cancel, py::dict kw) {
   const CallOptions options = take_call_options(kw);
   const PipelineConfig config = configured(kEnhance, kw);
-  const EnhanceCommand command{config.enhance.params, config.quality.params};
+  EnhanceCommand command{config.enhance.params, config.quality.params};
+  command.params.size = config.size;
   LoadedMesh input = input_of(surface, "enhance");
   const TriangleSoup* against = optional_surface(reference, "reference");
   CallControl control(progress, token_of(cancel), options);
@@ -258,6 +259,7 @@ py::dict call_tetrahedralize(const py::object& surface, const py::object& progre
   if (config.tetrahedralize.keep_surface) command.params.keep_surface = *config.tetrahedralize.keep_surface;
   command.finishing = finishing_of(config);
   command.patches = config.patches.params;
+  command.size = config.size;
   if (extrude) {
     command.extrude_depth = config.tetrahedralize.extrude_base;
     command.extrude_relative = kw.contains("extrude_base_relative") ? config.tetrahedralize.extrude_base_relative : 0;

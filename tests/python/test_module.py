@@ -253,6 +253,24 @@ def test_tetrahedralize_gives_the_command_lines_figures_and_file(tmp_path):
     assert py_out.read_bytes() == cli_out.read_bytes()
 
 
+@pytest.mark.parametrize("keywords", [{"size": "10%"}, {"size": {"size": "10%", "grading": 1.3}}])
+def test_size_keyword_is_the_command_lines_size(tmp_path, keywords):
+    """size="10%" is size={"size": "10%"} and --size 10%: the same tets, their edges on the size."""
+    points, faces = cube_surface()
+    source = tmp_path / "cube.off"
+    meshprep.Surface(points, faces).write(source)
+    cli_json = tmp_path / "cli.json"
+    run = run_cli("tetrahedralize", source, "-o", tmp_path / "cli.msh", "--size", "10%", "--json", cli_json)
+    assert run.returncode == 0, run.stderr
+    result = meshprep.tetrahedralize(meshprep.Surface(points, faces), **keywords)
+    report = json.loads(cli_json.read_text())
+    assert_same_figures(result.report, report)
+    assert "m" in report["switches"]
+    # 10 % of the diagonal (0.173): TetGen's sizes stop the edges under 1.5 h, most in [0.7, 1.4] h.
+    assert report["size_conformity"]["within_band"]["share"] >= 0.9
+    assert report["size_conformity"]["ratio"]["p99"] <= 1.5
+
+
 def test_pipeline_gives_the_command_lines_summary(tmp_path):
     source = DATA / "example004.stl"
     run = run_cli("pipeline", source, "-o", tmp_path / "cli", "--quiet")

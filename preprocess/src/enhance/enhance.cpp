@@ -15,6 +15,7 @@
 
 #include "meshprep/core/soup_view.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/core/size_parameters.h"
 #include "meshprep/core/finite_points.h"
 #include "meshprep/core/origin_shift.h"
 #include "meshprep/quality/self_intersections.h"
@@ -104,11 +105,12 @@ constexpr double kProbesPerEdge = 0.25;
 // Remeshes the input to its sizing field; taken back if it made the surface cross itself.
 // Returns whether it was kept.
 bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const EnhanceParams& params, double max_deviation,
-            double diagonal, std::size_t allowed_intersections, const std::function<bool()>& out_of_time,
+            double diagonal, const Vec3& shift, std::size_t allowed_intersections, const std::function<bool()>& out_of_time,
             EnhanceResult& result) {
   detail::SizingRules sizing_rules;
   sizing_rules.chord_tolerance = kChordShareOfBound * max_deviation;
   sizing_rules.max_faces = params.max_faces > 0 ? params.max_faces : std::max(kMaxFacesFloor, kMaxFacesPerInputFace * mesh.n_faces());
+  sizing_rules.size = params.size;
   detail::SizingField sizing(mesh, constraints, sizing_rules);
   result.sizing_faces = sizing.estimated_faces();
   detail::RemeshRules rules;
@@ -165,6 +167,9 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
                           std::to_string(allowed_intersections) + ")",
                       found);
   result.remeshed = true;
+  std::shared_ptr<SizeField> field = sizing.field();
+  field->move(shift);  // where the mesh is shifted back
+  result.size_field = std::move(field);
   result.remesh_splits = counts.splits;
   result.remesh_collapses = counts.collapses;
   result.remesh_flips = counts.flips;
@@ -178,6 +183,7 @@ void check_enhance_params(const EnhanceParams& params) {
   if (params.max_deviation) check_parameter("enhance", info.max_deviation, *params.max_deviation);
   check_parameter("enhance", info.target_min_angle_deg, params.target_min_angle_deg);
   check_parameter("enhance", info.feature_angle_deg, params.feature_angle_deg);
+  check_size_params(params.size);
   if (!(params.tail_weight >= 0) ||
       !(params.fidelity_weight >= 0) || !(params.flip_dihedral_deg >= 0 && params.flip_dihedral_deg < 90) ||
       !(params.max_face_change >= 0 && params.max_face_change <= 1) ||
@@ -216,9 +222,11 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
   // a simplified surface whose vertices the simplification placed off it (the decimated bunny's
   // remeshing crossed itself, was taken back, and cost 11 s).
   const QualityTail input_tail = detail::measure_tail(mesh, params.target_min_angle_deg);
+  // A size the user set is followed wherever the input lies.
   const bool remeshing = params.remesh == EnhanceRemesh::On ||
-                         (params.remesh == EnhanceRemesh::Auto && own <= kOnReference &&
-                          input_tail.under_target_fraction > EnhanceParams::kRemeshAbove);
+                         (params.remesh == EnhanceRemesh::Auto &&
+                          (params.size.any_set() ||
+                           (own <= kOnReference && input_tail.under_target_fraction > EnhanceParams::kRemeshAbove)));
   // Remeshing, the edges between planes are creases too (surface_constraints.h); taken back, the
   // features are found again as for any other input.
   std::optional<detail::SurfaceConstraints> features;
@@ -250,7 +258,7 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     if (params.progress) params.progress(0.0);
     return out_of_time();
   };
-  if (remeshing && !remesh(mesh, *features, params, max_deviation, diagonal, allowed_intersections,
+  if (remeshing && !remesh(mesh, *features, params, max_deviation, diagonal, near_origin.shift(), allowed_intersections,
                            remeshing_out_of_time, result))
     features.emplace(mesh, surface, params.feature_angle_deg, false);
   detail::SurfaceConstraints& constraints = *features;

@@ -48,6 +48,19 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
                         {"remesh", choice_name(enhance_remesh_modes(), params.remesh)},
                         {"max_faces", params.max_faces},
                         {"time_limit_seconds", params.time_limit_seconds}};
+  // The user's size settings (core/size_field.h), lengths as written: "2%" or a number; unset null.
+  const auto length = [](const std::optional<Length>& l) {
+    if (!l) return nlohmann::ordered_json(nullptr);
+    return l->relative ? nlohmann::ordered_json(length_text(*l)) : nlohmann::ordered_json(l->value);
+  };
+  const auto number = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr); };
+  const SizeParams& size = params.size;
+  json["parameters"]["size"] = {{"size", length(size.size)},
+                                {"size_min", length(size.size_min)},
+                                {"size_max", length(size.size_max)},
+                                {"grading", size.grading_used()},
+                                {"curvature_points", number(size.curvature_points)},
+                                {"thickness_layers", number(size.thickness_layers)}};
   json["tail_before"] = to_json(result.before);
   json["tail_after"] = to_json(result.after);
   json["time_seconds"] = result.seconds;

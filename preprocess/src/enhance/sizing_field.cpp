@@ -3,9 +3,8 @@
 #include "shared/triangle_angles.h"
 
 #include "meshprep/core/soup_view.h"
+#include "meshprep/quality/surface_distance.h"
 #include "meshprep/quality/triangle_metrics.h"
-
-#include <nanoflann.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +12,6 @@
 namespace meshprep::detail {
 namespace {
 
-// A demand's length grows by this much per unit of distance from it.
-constexpr double kGradation = 0.5;
 // A wall across counts for the thickness when its normal is within 30 degrees of facing back.
 const double kOppositeWall = std::cos(30.0 * M_PI / 180.0);
 // A piece of a face thinner than this fraction of its parent piece is near a wedge's edge (a
@@ -37,81 +34,22 @@ std::pair<double, double> edge_curvature(const TriMesh& mesh, TriMesh::EdgeHandl
 
 }  // namespace
 
-// The demands, grouped by length into levels (each twice the last's smallest length) with a k-d
-// tree each (nanoflann's dataset interface). A query searches each level only as far as one of its
-// demands could still beat the best length found (reach = (best - level's smallest) / gradation):
-// with one tree, the few shortest demands made every query search a wide ball of long ones
-// (example005: 2.8 of its 7.6 s went to the field).
-struct SizingField::Demands {
-  struct Level {
-    std::vector<Vec3> points;
-    std::vector<double> lengths;
-    double smallest = INFINITY;
-    std::size_t kdtree_get_point_count() const { return points.size(); }
-    double kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[i][static_cast<Eigen::Index>(dim)]; }
-    template <class Box>
-    bool kdtree_get_bbox(Box&) const {
-      return false;
-    }
-    using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Level>, Level, 3>;
-    std::unique_ptr<Tree> tree;
-  };
-  std::vector<Vec3> points;
-  std::vector<double> lengths;
-  std::vector<Level> levels;  // finest first
-
-  void add(const Vec3& p, double length) {
-    points.push_back(p);
-    lengths.push_back(length);
+SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constraints, const SizingRules& rules) {
+  const SizeParams& size = rules.size;
+  const double diagonal = bbox_diagonal(MeshSoupView(mesh));
+  if (size.size) {
+    base_ = size.size->resolved(diagonal);
+  } else {
+    double area = 0;
+    for (const auto f : mesh.faces()) area += mesh.calc_face_area(f);
+    base_ = std::sqrt(area / (kEquilateralArea * static_cast<double>(std::max<std::size_t>(1, mesh.n_faces()))));
   }
-
-  void index(double shortest) {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto level = static_cast<std::size_t>(std::floor(std::log2(lengths[i] / shortest)));
-      if (levels.size() <= level) levels.resize(level + 1);
-      levels[level].points.push_back(points[i]);
-      levels[level].lengths.push_back(lengths[i]);
-      levels[level].smallest = std::min(levels[level].smallest, lengths[i]);
-    }
-    for (Level& level : levels) {
-      if (level.points.empty()) continue;
-      level.tree = std::make_unique<Level::Tree>(3, level, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-      level.tree->buildIndex();
-    }
-  }
-
-  // min(best, min over demands s of h_s + gradation |x - s|).
-  double lowest(const Vec3& x, double best) const {
-    const double query[3] = {x.x(), x.y(), x.z()};
-    thread_local std::vector<std::pair<unsigned, double>> within;
-    nanoflann::SearchParams search;
-    search.sorted = false;
-    for (const Level& level : levels) {
-      if (level.smallest >= best) break;  // the levels after are longer still
-      if (level.points.empty()) continue;
-      unsigned nearest = 0;
-      double squared = 0;
-      level.tree->knnSearch(query, 1, &nearest, &squared);
-      best = std::min(best, level.lengths[nearest] + kGradation * std::sqrt(squared));
-      const double reach = (best - level.smallest) / kGradation;
-      if (reach <= 0) continue;
-      within.clear();
-      level.tree->radiusSearch(query, reach * reach, within, search);
-      for (const auto& [i, d2] : within) best = std::min(best, level.lengths[i] + kGradation * std::sqrt(d2));
-    }
-    return best;
-  }
-};
-
-SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constraints, const SizingRules& rules)
-    : demands_(std::make_unique<Demands>()) {
-  double area = 0;
-  for (const auto f : mesh.faces()) area += mesh.calc_face_area(f);
-  base_ = std::sqrt(area / (kEquilateralArea * static_cast<double>(std::max<std::size_t>(1, mesh.n_faces()))));
-  const double floor = rules.chord_tolerance;
+  if (size.size_max) base_ = std::min(base_, size.size_max->resolved(diagonal));
+  const double floor = size.size_min ? std::min(size.size_min->resolved(diagonal), base_) : std::min(rules.chord_tolerance, base_);
+  const double layers = size.thickness_layers.value_or(1);
   // Only demands below the base length count.
   const auto demand = [&](const Vec3& p, double length) {
-    if (length < base_) demands_->add(p, std::max(length, floor));
+    if (length < base_) demands_.push_back({p, std::max(length, floor)});
   };
   // Demands are sampled where they hold, no farther apart than they ask (a long strip's curvature
   // holds all along it, a thin plate's thickness all across it), within a budget.
@@ -126,13 +64,15 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
     const auto [curvature, width] = edge_curvature(mesh, e);
     if (!(curvature > 0)) continue;
     // Never finer than the input across the edge: below its facets' width the reference is flat
-    // (and a scan's noise is no curvature to follow).
-    const double chord = std::max(std::sqrt(8.0 * rules.chord_tolerance / curvature), width);
+    // (and a scan's noise is no curvature to follow). The user's points per turn hold regardless:
+    // a hole of 8 facets asked for 12 points gets them.
+    double chord = std::max(std::sqrt(8.0 * rules.chord_tolerance / curvature), width);
+    if (size.curvature_points) chord = std::min(chord, 2 * M_PI / (*size.curvature_points * curvature));
     if (chord >= base_) continue;
     const auto h = mesh.halfedge_handle(e, 0);
     const Vec3 a = to_eigen(mesh.point(mesh.from_vertex_handle(h))), b = to_eigen(mesh.point(mesh.to_vertex_handle(h)));
     const auto pieces = static_cast<std::size_t>(std::ceil((b - a).norm() / std::max(chord, floor)));
-    for (std::size_t k = 0; k < pieces && demands_->points.size() < most_demands; ++k)
+    for (std::size_t k = 0; k < pieces && demands_.size() < most_demands; ++k)
       demand(a + (b - a) * ((static_cast<double>(k) + 0.5) / static_cast<double>(pieces)), chord);
   }
   if (closed) {
@@ -147,12 +87,11 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
       const Corners corners = {to_eigen(mesh.point(mesh.from_vertex_handle(h))), to_eigen(mesh.point(mesh.to_vertex_handle(h))),
                                to_eigen(mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))))};
       sample_thickness(bvh, corners, inward * n, same ? static_cast<std::size_t>(f.idx()) : ~std::size_t(0), floor,
-                       most_demands, 0);
+                       layers, most_demands, 0);
     }
   }
-  shortest_ = base_;
-  for (const double length : demands_->lengths) shortest_ = std::min(shortest_, length);
-  demands_->index(shortest_);
+  field_ = std::make_shared<SizeField>(demands_, base_, size.grading_used(), floor);
+  demands_.clear();
   // Faces the field asks for: each input face's area over the equilateral triangle of the field's
   // length, the face cut into quarters until its pieces are no longer than that length (a needle
   // with one end at a fine spot asks for little beyond it).
@@ -165,21 +104,18 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
                         to_eigen(mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)))), evaluations, most_evaluations);
   }
   if (rules.max_faces > 0 && faces > static_cast<double>(rules.max_faces)) {
-    scale_ = std::sqrt(faces / static_cast<double>(rules.max_faces));
-    faces /= scale_ * scale_;
+    const double scale = std::sqrt(faces / static_cast<double>(rules.max_faces));
+    field_->scale(scale);
+    faces /= scale * scale;
   }
   estimated_faces_ = static_cast<std::size_t>(std::lround(faces));
 }
 
 SizingField::~SizingField() = default;
 
-double SizingField::unscaled(const Vec3& x) const { return demands_->lowest(x, base_); }
-
-double SizingField::operator()(const Vec3& x) const { return scale_ * unscaled(x); }
-
 void SizingField::sample_thickness(const TriangleBvh& bvh, const Corners& c, const Vec3& inward, std::size_t face,
-                                   double floor, std::size_t most_demands, double parent_thickness) {
-  if (demands_->points.size() >= most_demands) return;
+                                   double floor, double layers, std::size_t most_demands, double parent_thickness) {
+  if (demands_.size() >= most_demands) return;
   const Vec3 centroid = (c[0] + c[1] + c[2]) / 3.0;
   const TriangleBvh::RayHit hit = bvh.first_hit(centroid, inward, face);
   // Only a wall across counts (facing back within kOppositeWall): the other face of a wedge is
@@ -189,20 +125,20 @@ void SizingField::sample_thickness(const TriangleBvh& bvh, const Corners& c, con
       unit_normal(bvh.surface(), hit.face).dot(inward) < kOppositeWall)
     return;
   const double thickness = std::max(hit.distance, floor);
-  if (thickness < base_) demands_->add(centroid, thickness);
+  if (thickness / layers < base_) demands_.push_back({centroid, std::max(thickness / layers, floor)});
   const double longest = std::max({(c[1] - c[0]).norm(), (c[2] - c[1]).norm(), (c[0] - c[2]).norm()});
   // A plate is as thick all over; a wedge thins toward its edge, and the quarters there would be
   // cut without end (example016's letters: 175,000 samples): a piece under 3/4 of its parent's
   // thickness is not cut again.
-  if (longest <= thickness || thickness < kWedgeThinning * parent_thickness) return;
+  if (longest <= thickness / layers || thickness < kWedgeThinning * parent_thickness) return;
   const Vec3 ab = 0.5 * (c[0] + c[1]), bc = 0.5 * (c[1] + c[2]), ca = 0.5 * (c[2] + c[0]);
   for (const Corners& piece : {Corners{c[0], ab, ca}, Corners{ab, c[1], bc}, Corners{ca, bc, c[2]}, Corners{ab, bc, ca}})
-    sample_thickness(bvh, piece, inward, face, floor, most_demands, thickness);
+    sample_thickness(bvh, piece, inward, face, floor, layers, most_demands, thickness);
 }
 
 double SizingField::faces_over(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t& evaluations,
                                std::size_t most_evaluations) const {
-  const double length = unscaled((a + b + c) / 3.0);
+  const double length = (*field_)((a + b + c) / 3.0);
   ++evaluations;
   const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
   if (longest <= length || evaluations >= most_evaluations)

@@ -6,6 +6,7 @@
 #include "enhance/surface_constraints.h"
 
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/size_field.h"
 
 #include <array>
 #include <cstddef>
@@ -21,19 +22,21 @@ struct SizingRules {
   /// At most this many faces (estimated over the input): the field is scaled up uniformly when it
   /// asks for more.
   std::size_t max_faces = 0;
+  /// The user's sizes, curvature and thickness rules and the grading (core/size_field.h).
+  SizeParams size;
 };
 
-/// The smallest of: the equilateral edge that tiles the input's area with its own number of faces
-/// (the density the user chose); at each interior edge that is no crease, the chord of the
-/// curvature's tolerance (the curvature is the edge's dihedral angle over the width of its two
-/// faces: a faceted cylinder's strips give 1 / r), sampled along the edge; and over each face of a
-/// closed mesh, the local thickness (the distance along its inward normal to the surface across: a
-/// plate needs edges no longer than it is thick, or its tets are flat), sampled at the centroids of
-/// the face's quarters, and theirs, until they are no longer than it. Each demand holds at its
-/// own point and relaxes with distance by half of it
-/// (Persson's gradation of 1.5 for mesh-size functions): h(x) = min over demands s of
-/// h_s + |x - s| / 2, never under the chord tolerance. Demands sit where they are measured, not
-/// at the corners of a needle that may be far away.
+/// The smallest of: the base length (the user's size, else the equilateral edge that tiles the
+/// input's area with its own number of faces: the density the user chose), at most the user's
+/// size_max; at each interior edge that is no crease, the chord of the curvature's tolerance (the
+/// curvature is the edge's dihedral angle over the width of its two faces: a faceted cylinder's
+/// strips give 1 / r), and with curvature_points N, 2 pi / (N curvature), sampled along the edge;
+/// and over each face of a closed mesh, the local thickness (the distance along its inward normal
+/// to the surface across: a plate needs edges no longer than it is thick, or its tets are flat)
+/// over thickness_layers, sampled at the centroids of the face's quarters, and theirs, until they
+/// are no longer than it. Each demand holds at its own point and relaxes with distance by the
+/// grading (core/size_field.h), never under size_min (else the chord tolerance). Demands sit where
+/// they are measured, not at the corners of a needle that may be far away.
 class SizingField {
  public:
   /// `mesh` is the input (on its reference).
@@ -43,31 +46,32 @@ class SizingField {
   SizingField& operator=(const SizingField&) = delete;
 
   /// The target edge length at x.
-  double operator()(const Vec3& x) const;
+  double operator()(const Vec3& x) const { return (*field_)(x); }
+  /// The field itself (the tets may follow it too).
+  std::shared_ptr<SizeField> field() const { return field_; }
 
-  double base_length() const { return base_ * scale_; }
-  double shortest() const { return shortest_ * scale_; }
+  double base_length() const { return field_->longest(); }
+  double shortest() const { return field_->shortest(); }
   /// Faces the field asks for over the input (after the cap).
   std::size_t estimated_faces() const { return estimated_faces_; }
-  bool capped() const { return scale_ > 1; }
+  bool capped() const { return field_->scale_factor() > 1; }
   /// Every length times `factor` (> 1: fewer faces).
-  void coarsen(double factor) { scale_ *= factor; }
+  void coarsen(double factor) { field_->scale(factor); }
 
  private:
-  double unscaled(const Vec3& x) const;
   using Corners = std::array<Vec3, 3>;
   /// The thickness under triangle `c` (part of input face `face`) at its centroid, as a demand;
   /// then, if the triangle is longer than that and not much thinner than its parent piece, the
   /// same for its four quarters (`parent_thickness` 0: a whole face).
   void sample_thickness(const TriangleBvh& bvh, const Corners& c, const Vec3& inward, std::size_t face, double floor,
-                        std::size_t most_demands, double parent_thickness);
-  /// Faces the unscaled field asks for over triangle (a, b, c), cut into quarters until its pieces
+                        double layers, std::size_t most_demands, double parent_thickness);
+  /// Faces the field asks for over triangle (a, b, c), cut into quarters until its pieces
   /// are no longer than the field there or `most_evaluations` is reached.
   double faces_over(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t& evaluations, std::size_t most_evaluations) const;
 
-  struct Demands;
-  std::unique_ptr<Demands> demands_;
-  double base_ = 0, shortest_ = 0, scale_ = 1;
+  std::vector<SizeDemand> demands_;
+  double base_ = 0;
+  std::shared_ptr<SizeField> field_;
   std::size_t estimated_faces_ = 0;
 };
 

@@ -48,6 +48,9 @@ struct TetrahedralizeCommand {
   TetParams params;
   TetFinishing finishing;
   PatchParams patches;  ///< the boundary patches the tets' boundary tags come from
+  /// The tets follow the user's sizes (uniform_size_field: no curvature or thickness of their own;
+  /// the surface is not remeshed: `enhance --size` first, or the pipeline, does that).
+  SizeParams size;
   /// An open height field is closed into a block with a base this far below it: absolute if > 0,
   /// else this fraction of the bounding-box diagonal if > 0; 0 and 0: the surface must be closed.
   double extrude_depth = 0, extrude_relative = 0;

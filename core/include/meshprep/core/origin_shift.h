@@ -29,6 +29,8 @@ class ShiftedToOrigin {
 
   /// A copy of `soup` moved the same way (a reference surface that goes with the mesh).
   TriangleSoup moved(const TriangleSoup& soup) const;
+  /// What was subtracted from every point.
+  const Vec3& shift() const { return shift_; }
 
  private:
   TriMesh& mesh_;

@@ -5,9 +5,11 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/size_field.h"
 #include "meshprep/fem/tet_mesh.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +22,9 @@ struct TetParams {
   double max_volume = 0;        ///< TetGen -a: largest tet volume, absolute, finite (0 = no bound)
   double max_volume_relative = 0;  ///< same, as a fraction of the enclosed volume, in [0, 1] (0 = no bound)
   bool keep_surface = false;    ///< TetGen -Y: the boundary keeps exactly the input triangles
+  /// The edge length to aim at (TetGen -m, its sizes at the PLC's points: kTetgenSizePerLength x
+  /// h there, interpolated between them); null: none.
+  std::shared_ptr<const SizeField> size_field;
   /// Asked every 50 ms while TetGen runs; true stops it (tetrahedralize_plc throws Cancelled).
   std::function<bool()> cancelled;
 };
@@ -44,6 +49,13 @@ class TetgenError : public Error {
  private:
   int code_;
 };
+
+/// TetGen's -m splits a tet while half the longest edge at one of its vertices exceeds that
+/// vertex's size (tetgen 1.5.1, checktet4split), so the sizes given are this fraction of the
+/// target length h: the split stops once edges are under 2 x share x h. Measured on the shared CAD
+/// parts with --size (bench/RESULTS.md, "Size field"), a share of 1/2 left the median edge at
+/// 0.7 h; this one centres it on h.
+inline constexpr double kTetgenSizePerLength = 0.75;
 
 /// Checks every field of `params` against its range above; NaN and infinities are never in range.
 /// A radius-edge bound under 1 is refused: TetGen's refinement need not end below it (0.5 ran for

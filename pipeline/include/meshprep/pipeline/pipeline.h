@@ -19,6 +19,7 @@
 #include "meshprep/fem/knife_edges.h"
 #include "meshprep/fem/quadratic.h"
 #include "meshprep/fem/readiness.h"
+#include "meshprep/fem/size_conformity.h"
 #include "meshprep/fem/tet_mesh.h"
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/pipeline/pipeline_config.h"
@@ -27,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -91,6 +93,9 @@ struct PipelineResult {
   std::optional<Readiness> readiness;  ///< of the final surface (closed surfaces)
   std::optional<double> extrusion_depth;  ///< an open surface closed into a block: its base's depth
   std::string tetgen_switches;
+  /// With a size set (PipelineConfig::size): the field the tets followed, and how well they did.
+  std::shared_ptr<const SizeField> size_field;
+  std::optional<SizeConformity> size_conformity;
   FemVerdict fem;
   double seconds = 0;            ///< the whole run
 };

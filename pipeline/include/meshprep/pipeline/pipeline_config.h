@@ -82,6 +82,10 @@ struct PipelineConfig {
       return p;
     }
   } smooth;
+  /// The element size the surface's remeshing and the tets follow (core/size_field.h). Unset (the
+  /// default): the enhancement's own field (the input's density, curvature, thickness) and TetGen's
+  /// sizes; any size set makes the enhancement remesh to it and TetGen follow it (its -m sizes).
+  SizeParams size;
   struct Enhance {
     bool enabled = true;
     /// A fixed deviation bound, EnhanceParams::kLargestAutoDeviation (`meshprep enhance`'s default

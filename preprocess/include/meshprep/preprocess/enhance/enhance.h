@@ -17,6 +17,7 @@
 
 #include "meshprep/core/deadline.h"
 #include "meshprep/core/mesh.h"
+#include "meshprep/core/size_field.h"
 #include "meshprep/core/taken_back.h"
 #include "meshprep/preprocess/patches/patches.h"
 
@@ -24,6 +25,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace meshprep {
@@ -66,6 +68,9 @@ struct EnhanceParams {
   /// The remeshing's sizing field asks for at most this many faces (it is coarsened uniformly when
   /// it would ask for more); 0: ten times the input's faces, at least 50,000.
   std::size_t max_faces = 0;
+  /// The user's element size (core/size_field.h); any of it set makes auto remesh, so that the
+  /// surface follows it.
+  SizeParams size;
   /// Collapses may remove at most this fraction of the faces (two per removed vertex).
   double max_face_change = 0.02;
   /// The statistic's constants; defaults fitted by bench/tune_enhance (see enhance_defaults.h).
@@ -110,6 +115,8 @@ struct EnhanceResult {
   double sizing_shortest = 0, sizing_base = 0;
   std::size_t sizing_faces = 0;         ///< the faces the sizing field asks for (estimated over the input)
   bool sizing_capped = false;           ///< coarsened to stay within max_faces
+  /// The field the kept remeshing followed (null when none was kept): the tets may follow it too.
+  std::shared_ptr<const SizeField> size_field;
   std::size_t faces_before = 0, faces_after = 0;
   QualityTail before, after;
   double seconds = 0;
