@@ -222,6 +222,7 @@ void note_export_rounding(const std::string& output, const TetExportReport& repo
 }
 
 ImproveParams ImproveFlags::applied_to(ImproveParams params) const {
+  if (tet_quality) apply_tet_quality(params, *tet_quality);
   if (goal_min_dihedral_deg) params.goal_min_dihedral_deg = *goal_min_dihedral_deg;
   if (goal_max_dihedral_deg) params.goal_max_dihedral_deg = *goal_max_dihedral_deg;
   if (time_limit_seconds) params.time_limit_seconds = *time_limit_seconds;
@@ -233,6 +234,8 @@ void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off
   const ImproveParameters& p = improve_parameters();
   if (can_switch_off)
     cmd.add_flag("--no-improve", flags.off, "Keep TetGen's tets as they are (no flips, smoothing or new inner vertices)");
+  cmd.add_option(p.tet_quality.flag, flags.tet_quality, capitalised(p.tet_quality.help) + " (default: default)")
+      ->check(CLI::IsMember({"default", "high", "custom"}));
   add_override(cmd, p.goal_min_dihedral_deg, flags.goal_min_dihedral_deg, defaults.goal_min_dihedral_deg);
   add_override(cmd, p.goal_max_dihedral_deg, flags.goal_max_dihedral_deg, defaults.goal_max_dihedral_deg);
   add_override(cmd, p.time_limit_seconds, flags.time_limit_seconds, defaults.time_limit_seconds);

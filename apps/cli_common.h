@@ -122,6 +122,7 @@ void note_export_rounding(const std::string& output, const TetExportReport& repo
 /// The improvement's flags, each set only when given (the defaults stay ImproveParams').
 struct ImproveFlags {
   bool off = false;  ///< --no-improve
+  std::optional<std::string> tet_quality;  ///< --tet-quality: the goals' preset, before the goal flags
   std::optional<double> goal_min_dihedral_deg, goal_max_dihedral_deg, time_limit_seconds;
   /// `params` with the flags that were given.
   ImproveParams applied_to(ImproveParams params) const;

@@ -1,4 +1,4 @@
-// meshprep improve TETS -o OUT [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
+// meshprep improve TETS -o OUT [--tet-quality default|high] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--msh-version 4.1|2.2] [--binary | --ascii] [--target NAME]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--threads N] [--order 1|2 [--reference SURFACE]] [--json FILE|-]

@@ -1,7 +1,7 @@
 // meshprep pipeline IN -o OUTDIR [--config FILE.json] [--repair] [--target-faces N | --ratio R]
 //   [--extrude-base DEPTH] [--format msh|vtu|mesh|inp|node|xdmf] [--msh-version 4.1|2.2] [--binary | --ascii] [--order 1|2]
 //   [--size H] [--size-min H] [--size-max H] [--grading G] [--curvature-points N] [--thickness-layers K]
-//   [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
+//   [--no-improve] [--tet-quality default|high] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG] [--improve-time-limit S]
 //   [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--fail-on CONDITIONS] [--threads N] [--time-limit S] [--quiet] [--json FILE|-] [--print-config] [--config-keys]
 #include "cli_common.h"

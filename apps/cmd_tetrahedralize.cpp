@@ -2,7 +2,7 @@
 //   [--max-volume V | --max-volume-relative F] [--keep-surface] [--msh-version 4.1|2.2] [--binary | --ascii]
 //   [--target NAME] [--diagnose FILE] [--extrude-base DEPTH | --extrude-base-relative F]
 //   [--size H] [--size-min H] [--size-max H] [--grading G] [--curvature-points N] [--thickness-layers K]
-//   [--fem-check] [--no-improve] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
+//   [--fem-check] [--no-improve] [--tet-quality default|high] [--goal-min-dihedral DEG] [--goal-max-dihedral DEG]
 //   [--improve-time-limit S] [--min-dihedral-threshold DEG] [--max-dihedral-threshold DEG] [--max-inverted-tets N]
 //   [--time-limit S] [--threads N] [--order 1|2] [--json FILE|-]
 #include "cli_common.h"

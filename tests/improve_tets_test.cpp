@@ -596,3 +596,40 @@ TEST(ImproveTets, RefusesGoalsOutOfRange) {
     EXPECT_THROW(improve_tets(m, params), InvalidInput) << lo << " " << hi;
   }
 }
+
+namespace meshprep {
+namespace {
+
+// A goal past the default is climbed from the default goals' result and kept only if no worse:
+// the high preset's tets are never worse than the default's, by the objective at the high goals.
+TEST(ImproveTets, TheHighPresetEndsNoWorseThanTheDefault) {
+  for (const unsigned seed : {3u, 7u, 11u}) {
+    TetMesh at_default = jittered_cube(4, 0.45, seed), at_high = at_default;
+    const ImproveResult d = improve_tets(at_default);
+    ImproveParams high;
+    apply_tet_quality(high, "high");
+    EXPECT_EQ(high.goal_min_dihedral_deg, 20);
+    EXPECT_EQ(high.goal_max_dihedral_deg, 150);
+    EXPECT_EQ(tet_quality_of(high), "high");
+    const ImproveResult h = improve_tets(at_high, high);
+    const auto worst = [](double lo, double hi) {
+      const double w = std::sin(20 * M_PI / 180) / std::sin(30 * M_PI / 180);
+      return std::min(std::sin(lo * M_PI / 180), w * std::sin((180 - hi) * M_PI / 180));
+    };
+    EXPECT_GE(worst(h.min_dihedral_after_deg, h.max_dihedral_after_deg),
+              worst(d.min_dihedral_after_deg, d.max_dihedral_after_deg) - 1e-12)
+        << seed << ": " << h.min_dihedral_after_deg << "/" << h.max_dihedral_after_deg << " against "
+        << d.min_dihedral_after_deg << "/" << d.max_dihedral_after_deg;
+    EXPECT_EQ(h.min_dihedral_before_deg, d.min_dihedral_before_deg) << seed;  // both from the same tets
+    EXPECT_TRUE(all_positive(at_high)) << seed;
+    // The figures describe the tets returned.
+    EXPECT_NEAR(analyze_tet_quality(at_high).min_dihedral_deg.min, h.min_dihedral_after_deg, 1e-9) << seed;
+  }
+  ImproveParams custom;
+  custom.goal_min_dihedral_deg = 18;
+  EXPECT_EQ(tet_quality_of(custom), "custom");
+  EXPECT_THROW(apply_tet_quality(custom, "best"), InvalidInput);
+}
+
+}  // namespace
+}  // namespace meshprep

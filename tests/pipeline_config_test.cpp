@@ -137,6 +137,25 @@ TEST(PipelineConfig, SizesAreLengthsOrPercentagesAndReadBack) {
             std::string::npos);
 }
 
+// The goals' preset sets the goals; written back, the goals say which preset they are.
+TEST(PipelineConfig, TheTetQualityPresetSetsTheGoals) {
+  PipelineConfig high;
+  apply_config(Json::parse(R"({"improve": {"tet_quality": "high"}})"), "c.json", high);
+  EXPECT_EQ(high.improve.params.goal_min_dihedral_deg, 20);
+  EXPECT_EQ(high.improve.params.goal_max_dihedral_deg, 150);
+  EXPECT_EQ(to_json(high)["improve"]["tet_quality"], "high");
+  PipelineConfig custom;
+  apply_config(Json::parse(R"({"improve": {"tet_quality": "high", "goal_min_dihedral_deg": 18}})"), "c.json", custom);
+  EXPECT_EQ(custom.improve.params.goal_min_dihedral_deg, 18);
+  EXPECT_EQ(custom.improve.params.goal_max_dihedral_deg, 150);
+  EXPECT_EQ(to_json(custom)["improve"]["tet_quality"], "custom");
+  PipelineConfig again;
+  apply_config(Json::parse(to_json(custom).dump()), "again.json", again);
+  EXPECT_EQ(to_json(again), to_json(custom));
+  EXPECT_NE(error_of(Json::parse(R"({"improve": {"tet_quality": "best"}})")).find("improve.tet_quality: expected one of"),
+            std::string::npos);
+}
+
 TEST(PipelineConfig, ValuesOfTheWrongTypeOrRangeAreRefusedWithTheKey) {
   EXPECT_EQ(error_of(Json::parse(R"({"simplify": {"ratio": 0}})")),
             "c.json: simplify.ratio: expected null or a number in (0, 1], not 0");

@@ -21,6 +21,10 @@ const ImproveParameters& improve_parameters() {
   constexpr double inf = std::numeric_limits<double>::infinity();
   // The regular tet's dihedral angle is 70.5 degrees: a goal must leave room on either side of 60.
   static const ImproveParameters parameters{
+      {"tet_quality", "--tet-quality",
+       "the goals' preset: default (15/160 deg), high (20/150 deg: climbed from the default's tets, kept only if no "
+       "worse; where the surface allows less, the report names the edge), custom (the goals as set)",
+       {}},
       {"goal_min_dihedral_deg", "--goal-min-dihedral", "the tets with a smaller dihedral angle (degrees) are improved",
        {0, 60, true, true}},
       {"goal_max_dihedral_deg", "--goal-max-dihedral", "... and those with a larger one (degrees)", {60, 180, true, true}},

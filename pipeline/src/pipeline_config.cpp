@@ -376,6 +376,17 @@ std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
   std::vector<Key> keys;
   keys.push_back(flag("improve", "enabled", i.enabled,
                       "improve TetGen's tets (flips, smoothing, new inner vertices; the boundary is kept exactly)"));
+  // The preset before the goals: a file read back sets the preset's goals, then the goals as written.
+  keys.push_back({"improve", info.tet_quality.key, "one of default, high, custom", info.tet_quality.help,
+                  [&p](const Json& v) {
+                    if (!v.is_string()) throw BadValue{"expected one of default, high, custom, not " + shown(v)};
+                    try {
+                      apply_tet_quality(p, v.get<std::string>());
+                    } catch (const InvalidInput&) {
+                      throw BadValue{"expected one of default, high, custom, not " + shown(v)};
+                    }
+                  },
+                  [&p] { return OrderedJson(tet_quality_of(p)); }});
   keys.push_back(number("improve", info.goal_min_dihedral_deg, p.goal_min_dihedral_deg));
   keys.push_back(number("improve", info.goal_max_dihedral_deg, p.goal_max_dihedral_deg));
   keys.push_back(flag("improve", info.insertion, p.insertion));
@@ -386,8 +397,8 @@ std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
 
 std::vector<Key> knife_edges_keys(PipelineConfig::KnifeEdges& k) {
   return {flag("knife_edges", "enabled", k.enabled,
-               "open the surface's knife edges and caps that hold the tets below improve.goal_min_dihedral_deg "
-               "(flips and collapses, each within enhance.max_deviation of the input, listed in the report)")};
+               "open the surface's knife edges and caps that hold the tets below improve.goal_min_dihedral_deg, "
+               "at most the default goal's (flips and collapses, each within enhance.max_deviation of the input, listed in the report)")};
 }
 
 std::vector<Key> verdict_keys(TetThresholds& t) {
@@ -428,18 +439,21 @@ void apply_config(const Json& json, const std::string& origin, PipelineConfig& c
     std::vector<Key>& keys = section->second;
     for (const auto& key_item : value.items()) {
       const std::string& key_name = key_item.key();
-      const Json& key_value = key_item.value();
-      auto key = std::find_if(keys.begin(), keys.end(), [&](const Key& k) { return k.name == key_name; });
-      if (key == keys.end()) {
+      if (std::none_of(keys.begin(), keys.end(), [&](const Key& k) { return k.name == key_name; })) {
         std::string valid;
         for (const Key& k : keys) valid += (valid.empty() ? "" : ", ") + k.name;
         throw InvalidInput(origin + ": unknown key '" + section_name + "." + key_name + "'; valid keys of " +
                            section_name + ": " + valid);
       }
+    }
+    // In the table's order, not the file's: a preset (improve.tet_quality) comes before the keys
+    // it sets, whichever order the file lists them in.
+    for (Key& key : keys) {
+      if (!value.contains(key.name)) continue;
       try {
-        key->read(key_value);
+        key.read(value.at(key.name));
       } catch (const BadValue& e) {
-        throw InvalidInput(origin + ": " + section_name + "." + key_name + ": " + e.what);
+        throw InvalidInput(origin + ": " + section_name + "." + key.name + ": " + e.what);
       }
     }
   }

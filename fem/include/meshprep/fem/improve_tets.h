@@ -74,6 +74,20 @@ struct ImproveParams {
   std::function<bool()> cancelled;
 };
 
+/// The goals' presets (`--tet-quality`): "default", ImproveParams' own 15/160 deg (the floor the
+/// verdict's 10/165 leaves room under); "high", 20/150 deg (a quality mode: Stellar, Klingner &
+/// Shewchuk 2007, reaches 23-31 deg on its test set). A goal past the default is climbed from the
+/// default's result and kept only if no worse (improve_tets).
+struct TetQualityPreset {
+  const char* name;
+  double goal_min_dihedral_deg, goal_max_dihedral_deg;
+};
+const std::vector<TetQualityPreset>& tet_quality_presets();
+/// The name of the preset whose goals `params` has, or "custom".
+std::string tet_quality_of(const ImproveParams& params);
+/// Sets the goals of preset `name` ("custom" leaves them). \throws InvalidInput for another name.
+void apply_tet_quality(ImproveParams& params, const std::string& name);
+
 /// A boundary edge where the surface caps the smallest dihedral angle below the goal.
 struct LimitingBoundaryEdge {
   std::uint32_t a = 0, b = 0;  ///< point indices

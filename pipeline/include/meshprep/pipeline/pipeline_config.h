@@ -101,7 +101,8 @@ struct PipelineConfig {
     }
   } enhance;
   /// The knife edges of the final surface opened before the tets are made (knife_edges.h): on by
-  /// default, where the surface itself caps the tets below improve.goal_min_dihedral_deg, within
+  /// default, where the surface itself caps the tets below improve.goal_min_dihedral_deg (at most
+  /// the default goal's: a higher goal is climbed from the default run's tets), within
   /// enhance.max_deviation of the input. Skipped when no tets are made.
   struct KnifeEdges {
     bool enabled = true;
