@@ -1,9 +1,9 @@
 #pragma once
 /// \file size_field.h
 /// The edge length a mesh aims at, anywhere in space: h(x). The surface's remeshing (preprocess)
-/// and the tets (fem) read the same field; preprocess builds it (size/size_field.h) from the
-/// demands a surface and its user make: a length wanted at a point (the user's size, the
-/// curvature, the thickness across a wall), and a grading.
+/// and the tets (fem) read the same field; the enhancement builds it (preprocess/src/enhance/
+/// sizing_field.h) from the demands a surface and its user make: a length wanted at a point (the
+/// user's size, the curvature, the thickness across a wall), and a grading.
 ///
 /// Grading: h is the largest function under every demand whose gradient is at most g = grading - 1,
 /// h(x) = min over demands s of (h_s + g |x - s|): the closed-form solution of gradient limiting,
