@@ -69,17 +69,18 @@ struct Reader {
 
 constexpr char kOk = 0, kTetgenCode = 1, kOtherError = 2;
 
-// `sizes`: empty, or TetGen's -m size at each point.
-void fill_tetgenio(const SurfacePlc& plc, const std::vector<double>& sizes, tetgenio& in) {
+// `size`: null, or the field whose TetGen -m sizes the points get (`shift` added back to them).
+void fill_tetgenio(const SurfacePlc& plc, const SizeField* size, const Vec3& shift, tetgenio& in) {
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(plc.points.size());
   in.pointlist = new REAL[3 * plc.points.size()];
   for (std::size_t i = 0; i < plc.points.size(); ++i)
     for (int d = 0; d < 3; ++d) in.pointlist[3 * i + d] = plc.points[i][d];
-  if (!sizes.empty()) {
+  if (size) {
     in.numberofpointmtrs = 1;
-    in.pointmtrlist = new REAL[sizes.size()];
-    std::copy(sizes.begin(), sizes.end(), in.pointmtrlist);
+    in.pointmtrlist = new REAL[plc.points.size()];
+    for (std::size_t i = 0; i < plc.points.size(); ++i)
+      in.pointmtrlist[i] = kTetgenSizePerLength * (*size)(plc.points[i] + shift);
   }
   in.numberoffacets = static_cast<int>(plc.facets.size());
   in.facetlist = new tetgenio::facet[plc.facets.size()];
@@ -175,17 +176,16 @@ TetMesh deserialise(Reader& in) {
 }
 
 // Runs in the child process.
-// With a size field (`sizes` at the PLC's points, `size` where they lie: `shift` added back), two
+// With a size field (where the points lie once `shift` is added back), two
 // runs: TetGen interpolates a Steiner point's size linearly from the tet it lands in, so from the
 // surface's points alone the interior would get their blend, not the field (a field fine at one
 // corner of a cube, coarse at the others: 70 % of the edges within [0.7, 1.4] h); the first run's
 // tets, their points sized by the field, are the second's background mesh (TetGen's -m with a
 // .b mesh), which carries the field inside.
-std::string run_tetgen(const SurfacePlc& plc, const std::vector<double>& sizes, const SizeField* size, const Vec3& shift,
-                       const std::string& switches) {
+std::string run_tetgen(const SurfacePlc& plc, const SizeField* size, const Vec3& shift, const std::string& switches) {
   try {
     tetgenio in, out;
-    fill_tetgenio(plc, sizes, in);
+    fill_tetgenio(plc, size, shift, in);
     std::string sw = switches;
     if (size) {
       tetgenio background;
@@ -342,12 +342,8 @@ TetMesh tetrahedralize_plc(const SurfacePlc& surface, const TetParams& params) {
   }
   const SurfacePlc& plc = shift.isZero() ? surface : moved;
   const std::string switches = tetgen_switches(params, std::abs(plc_volume(plc)));
-  // The sizes at the input's own points (where the field lies: unshifted).
-  std::vector<double> sizes;
-  if (params.size_field)
-    for (const Vec3& p : surface.points) sizes.push_back(kTetgenSizePerLength * (*params.size_field)(p));
   const detail::IsolatedResult run =
-      detail::call_isolated([&] { return run_tetgen(plc, sizes, params.size_field.get(), shift, switches); }, params.cancelled);
+      detail::call_isolated([&] { return run_tetgen(plc, params.size_field.get(), shift, switches); }, params.cancelled);
   if (run.crashed || run.output.empty()) {
     const std::string how = run.signal ? "signal " + std::to_string(run.signal) + ": " + strsignal(run.signal)
                                        : "exit status " + std::to_string(run.exit_status);

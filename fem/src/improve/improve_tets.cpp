@@ -437,6 +437,11 @@ namespace {
 constexpr double kClimbShareOfFloor = 2;
 constexpr double kClimbFloorSeconds = 1;
 
+// The improvement's own time limit on `tets` tets: the one set, or the automatic one (0: none).
+double own_time_limit(const ImproveParams& params, std::size_t tets) {
+  return params.time_limit_seconds == kAutomaticTimeLimit ? automatic_improve_time_limit(tets) : params.time_limit_seconds;
+}
+
 // One run of the schedule at params' goals.
 ImproveResult improve_at_goal(TetMesh& mesh, const ImproveParams& params) {
   const Clock::time_point start = Clock::now();
@@ -496,9 +501,7 @@ ImproveResult improve_at_goal(TetMesh& mesh, const ImproveParams& params) {
   result.limiting_edges = std::move(limiting);
 
   // The time limit counts from the start above (the setup too), shortened to the command's deadline.
-  const double own_limit = params.time_limit_seconds == kAutomaticTimeLimit ? automatic_improve_time_limit(mesh.tets.size())
-                                                                             : params.time_limit_seconds;
-  const double limit = params.deadline.limit(own_limit);
+  const double limit = params.deadline.limit(own_time_limit(params, mesh.tets.size()));
   std::optional<Clock::time_point> end;
   if (limit > 0) end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
   Schedule schedule(complex, params, result, start, end);
@@ -554,8 +557,7 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   // The climb's budget: at most twice the first stage's time (at least kClimbFloorSeconds), within
   // its own limit (none when the user asked for none): the quality mode then costs at most about
   // three default runs of the improvement.
-  const double own = params.time_limit_seconds == kAutomaticTimeLimit ? automatic_improve_time_limit(floor_mesh.tets.size())
-                                                                       : params.time_limit_seconds;
+  const double own = own_time_limit(params, floor_mesh.tets.size());
   const double climb = std::max(kClimbShareOfFloor * floor.seconds, kClimbFloorSeconds * kAutomaticTimeLimitScale);
   second.time_limit_seconds = own > 0 ? std::min(own, climb) : 0;  // 0: the user asked for no limit
   if (params.progress) second.progress = [&params](double f) { params.progress(0.5 + 0.5 * f); };
