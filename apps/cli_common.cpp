@@ -1,10 +1,12 @@
 #include "cli_common.h"
+
 #include "cli_parameters.h"
 #include "interrupt.h"
 #include "progress_bar.h"
 
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
+#include "meshprep/core/patch_names.h"
 #include "meshprep/core/size_parameters.h"
 #include "meshprep/fem/fem_parameters.h"
 #include "meshprep/fem/solver_targets.h"
@@ -248,28 +250,59 @@ SizeParams SizeFlags::applied_to(SizeParams params) const {
   if (given.curvature_points) params.curvature_points = given.curvature_points;
   if (given.thickness_layers) params.thickness_layers = given.thickness_layers;
   if (given.grading) params.grading = given.grading;
+  for (const auto& [name, size] : given.patch_sizes) params.patch_sizes[name] = size;
   return params;
 }
 
 void add_size_options(CLI::App& cmd, SizeFlags& flags) {
   const SizeParameters& p = size_parameters();
-  for (const auto& [info, field] : {std::pair{&p.size, &flags.given.size}, {&p.size_min, &flags.given.size_min},
-                                    {&p.size_max, &flags.given.size_max}}) {
+  const auto length_check = [](const std::string& key) {
+    return CLI::Validator(
+        [key](std::string& text) {
+          try {
+            parse_length(text, key);
+            return std::string();
+          } catch (const InvalidInput&) {
+            return "expected a positive length or a percentage of the diagonal such as 2%, not '" + text + "'";
+          }
+        },
+        "LENGTH|N%");
+  };
+  // --size LENGTH and --size NAME=LENGTH (a patch's), one value per flag so that an input after
+  // it is not read as a size; the last global LENGTH holds.
+  SizeParams& given = flags.given;
+  cmd.add_option_function<std::vector<std::string>>(
+         p.size.flag,
+         [&given](const std::vector<std::string>& values) {
+           for (const std::string& value : values) {
+             const std::size_t equals = value.find('=');
+             if (equals == std::string::npos) given.size = parse_length(value, "--size");
+             else given.patch_sizes[value.substr(0, equals)] = parse_length(value.substr(equals + 1), "--size " + value);
+           }
+         },
+         capitalised(p.size.help) + ". NAME=LENGTH (the flag repeated, e.g. --size 2% --size load=0.4%): " + p.patch_sizes.help)
+      ->expected(1)
+      ->take_all()
+      ->type_name("LENGTH|NAME=LENGTH")
+      ->check(CLI::Validator(
+          [length_check](std::string& value) {
+            const std::size_t equals = value.find('=');
+            std::string length = value;
+            if (equals != std::string::npos) {
+              const std::string name = value.substr(0, equals);
+              if (!is_valid_name(name)) return "'" + name + "' is no patch name: " + std::string(kNameRule);
+              length = value.substr(equals + 1);
+            }
+            return length_check("size")(length);
+          },
+          ""));
+  for (const auto& [info, field] : {std::pair{&p.size_min, &flags.given.size_min}, {&p.size_max, &flags.given.size_max}}) {
     std::optional<Length>* target = field;
     const std::string key = info->key;
     cmd.add_option_function<std::string>(
            info->flag, [target, key](const std::string& text) { *target = parse_length(text, "--" + key); },
            capitalised(info->help))
-        ->check(CLI::Validator(
-            [key](std::string& text) {
-              try {
-                parse_length(text, key);
-                return std::string();
-              } catch (const InvalidInput&) {
-                return "expected a positive length or a percentage of the diagonal such as 2%, not '" + text + "'";
-              }
-            },
-            "LENGTH|N%"));
+        ->check(length_check(key));
   }
   add_auto_parameter(cmd, p.grading, flags.given.grading);
   add_auto_parameter(cmd, p.curvature_points, flags.given.curvature_points);

@@ -83,6 +83,15 @@ one_line "patches -o .off" "holds no patches"
 expect_exit "pipeline --rename unknown" 2 $?
 one_line "pipeline --rename unknown" "no patch is named 'nowhere'"
 [ ! -e refused ] && ok || bad "pipeline wrote a folder after a refused rename"
+# A size for a patch the surface does not have: one line naming it and the surface's, nothing written.
+"$bin" pipeline bar.obj -o refused --size 0.5 --size lod=0.1 > /dev/null 2> err.txt
+expect_exit "pipeline --size unknown=" 2 $?
+one_line "pipeline --size unknown=" "no patch named 'lod' (the surface's patches: "
+[ ! -e refused ] && ok || bad "pipeline wrote a folder after a refused patch size"
+"$bin" tetrahedralize bar.obj -o refused.msh --size 1st=0.1 > /dev/null 2> err.txt
+expect_exit "tetrahedralize --size 1st=" 2 $?
+one_line "tetrahedralize --size 1st=" "'1st' is no patch name"
+[ ! -e refused.msh ] && ok || bad "tetrahedralize wrote refused.msh after a refused patch size"
 
 # The pipeline carries the file's groups into the tets: physical names in the .msh, each face
 # of the tets' boundary on its own side of the bar.

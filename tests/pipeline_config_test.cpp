@@ -137,6 +137,38 @@ TEST(PipelineConfig, SizesAreLengthsOrPercentagesAndReadBack) {
             std::string::npos);
 }
 
+// A patch's size and the regions' are read, checked and written back as given.
+TEST(PipelineConfig, PatchAndRegionSizesReadBack) {
+  PipelineConfig changed;
+  apply_config(Json::parse(R"({"size": {"patches": {"load_face": "0.1%", "fixed": 0.2},
+                                         "regions": [{"box": [0, 0, 0, 1, 2, 3], "size": 0.05},
+                                                     {"sphere": [1, 1, 1, 0.5], "size": "0.2%"}]}})"),
+               "c.json", changed);
+  ASSERT_EQ(changed.size.patch_sizes.size(), 2u);
+  EXPECT_TRUE(changed.size.patch_sizes.at("load_face").relative);
+  EXPECT_DOUBLE_EQ(changed.size.patch_sizes.at("load_face").value, 0.001);
+  EXPECT_EQ(changed.size.patch_sizes.at("fixed").value, 0.2);
+  ASSERT_EQ(changed.size.regions.size(), 2u);
+  EXPECT_EQ(changed.size.regions[0].hi, Vec3(1, 2, 3));
+  EXPECT_EQ(changed.size.regions[1].shape, SizeRegion::Shape::sphere);
+  EXPECT_EQ(changed.size.regions[1].radius, 0.5);
+  EXPECT_TRUE(changed.size.any_set());
+  const nlohmann::ordered_json written = to_json(changed);
+  EXPECT_EQ(written["size"]["patches"]["load_face"], "0.1%");
+  EXPECT_EQ(written["size"]["regions"][1]["size"], "0.2%");
+  PipelineConfig again;
+  apply_config(Json::parse(written.dump()), "again.json", again);
+  EXPECT_EQ(to_json(again), written);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"patches": {"top": "big"}}})")).find("size.patches: the size of 'top'"),
+            std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"patches": {"1st": 0.1}}})")).find("'1st' is no patch name"),
+            std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"regions": [{"sphere": [0, 0, 0], "size": 1}]}})")).find("size.regions: expected"),
+            std::string::npos);
+  EXPECT_NE(error_of(Json::parse(R"({"size": {"regions": [{"box": [0, 0, 0, 1, -1, 1], "size": 1}]}})")).find("lower corner"),
+            std::string::npos);
+}
+
 // The goals' preset sets the goals; written back, the goals say which preset they are.
 TEST(PipelineConfig, TheTetQualityPresetSetsTheGoals) {
   PipelineConfig high;

@@ -3,6 +3,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/size_field.h"
 #include "meshprep/core/size_parameters.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -85,6 +86,81 @@ TEST(SizeField, BoundsOutOfRangeAreRefused) {
   EXPECT_THROW(SizeField({}, 1, 1.3, 2), InvalidInput);
 }
 
+// A region asks for its length inside it and grows by the grading outside, as a point does.
+TEST(SizeField, ARegionHoldsInsideAndIsGradedOutside) {
+  SizeRegion box;
+  box.lo = Vec3(0, 0, 0);
+  box.hi = Vec3(1, 2, 3);
+  SizeRegion ball;
+  ball.shape = SizeRegion::Shape::sphere;
+  ball.center = Vec3(10, 0, 0);
+  ball.radius = 1;
+  EXPECT_EQ(box.distance(Vec3(0.5, 1, 2)), 0);
+  EXPECT_DOUBLE_EQ(box.distance(Vec3(4, 2.5, 3)), std::hypot(3.0, 0.5));
+  EXPECT_EQ(ball.distance(Vec3(10.5, 0, 0)), 0);
+  EXPECT_DOUBLE_EQ(ball.distance(Vec3(10, 3, 0)), 2);
+  const SizeField field({}, 1.0, 1.3, 0, {{box, 0.1}, {ball, 0.2}});
+  EXPECT_DOUBLE_EQ(field(Vec3(0.5, 1, 2)), 0.1);
+  EXPECT_DOUBLE_EQ(field(Vec3(1.5, 1, 2)), 0.1 + 0.3 * 0.5);
+  EXPECT_DOUBLE_EQ(field(Vec3(10, 0, 1.5)), 0.2 + 0.3 * 0.5);
+  EXPECT_DOUBLE_EQ(field(Vec3(5, 10, 0)), 1.0);
+  EXPECT_EQ(field.regions(), 2u);
+  EXPECT_DOUBLE_EQ(field.shortest(), 0.1);
+}
+
+// A patch's size covers its faces (the field there within (1 + (G - 1) / 4) of it: the demands
+// are no farther apart than half the size) and not the others' beyond the grading; a name is
+// matched without regard to case, and an unknown one is named with the surface's.
+TEST(SizeField, APatchSizeCoversItsFacesOnly) {
+  TriangleSoup cube = test::cube(1.0);
+  cube.patches.assign(cube.triangles.size(), 2);
+  cube.patch_names = {{1, "Top"}, {2, "rest"}};
+  for (std::size_t f = 0; f < cube.triangles.size(); ++f) {
+    bool top = true;
+    for (const auto v : cube.triangles[f]) top = top && cube.points[v].z() == 1;
+    if (top) cube.patches[f] = 1;
+  }
+  SizeParams params;
+  params.size = Length{0.5, false};
+  params.patch_sizes["top"] = Length{0.05, false};
+  const auto field = user_size_field(params, cube);
+  ASSERT_TRUE(field);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 on_top(unit(random), unit(random), 1);
+    EXPECT_LE((*field)(on_top), 0.05 * (1 + 0.3 / 4) + 1e-12) << on_top.transpose();
+    EXPECT_GE((*field)(on_top), 0.05);
+    const Vec3 on_bottom(unit(random), unit(random), 0);
+    EXPECT_GE((*field)(on_bottom), 0.05 + 0.3 * 1.0);  // one unit from the top
+    EXPECT_NEAR((*field)(on_bottom), 0.05 + 0.3 * 1.0, 0.3 * 1e-3);
+  }
+  params.patch_sizes = {{"tpo", Length{0.05, false}}};
+  try {
+    user_size_field(params, cube);
+    ADD_FAILURE() << "an unknown patch was taken";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "size: no patch named 'tpo' (the surface's patches: Top, rest)");
+  }
+}
+
+// Without a size, the user's field follows the surface's own density (Gmsh's default): finer
+// where its faces are, graded into the volume; with nothing set there is no field.
+TEST(SizeField, WithoutASizeTheSurfacesDensityHolds) {
+  const TriangleSoup fine = test::subdivided_cube(8);  // edges 1 and sqrt 2 on a cube of side 8
+  SizeParams params;
+  EXPECT_FALSE(user_size_field(params, fine));
+  params.size_max = Length{3, false};
+  const auto field = user_size_field(params, fine);
+  ASSERT_TRUE(field);
+  const double mean_edge = (2 + std::sqrt(2.0)) / 3;
+  EXPECT_NEAR((*field)(Vec3(0.5, 0.5, 0)), mean_edge + 0.3 * std::sqrt(2.0) / 6, 1e-9);  // a face's centroid is 1/3 off
+  EXPECT_DOUBLE_EQ((*field)(Vec3(4, 4, 30)), 3.0);  // capped by size_max far away
+  params.curvature_points = 12;  // the surface's demand: the enhancement's, none here
+  params.size_max.reset();
+  EXPECT_FALSE(user_size_field(params, fine));
+}
+
 TEST(Length, AbsoluteOrAPercentageOfTheDiagonal) {
   const Length absolute = parse_length("0.5", "--size");
   EXPECT_FALSE(absolute.relative);
@@ -124,6 +200,21 @@ TEST(SizeParams, CheckedAgainstTheirRanges) {
   EXPECT_EQ(p.grading_used(), kSizeGrading);
   p.grading = 1.1;
   EXPECT_EQ(p.grading_used(), 1.1);
+  p = SizeParams();
+  p.patch_sizes["1st"] = Length{0.1, false};
+  EXPECT_THROW(check_size_params(p), InvalidInput);
+  EXPECT_TRUE(p.any_set());
+  p = SizeParams();
+  SizeRegion region;
+  region.lo = Vec3(0, 0, 0);
+  region.hi = Vec3(1, -1, 1);
+  region.size = Length{0.1, false};
+  p.regions = {region};
+  EXPECT_THROW(check_size_params(p), InvalidInput);
+  p.regions[0].shape = SizeRegion::Shape::sphere;
+  EXPECT_THROW(check_size_params(p), InvalidInput);  // radius 0
+  p.regions[0].radius = 1;
+  EXPECT_NO_THROW(check_size_params(p));
 }
 
 }  // namespace

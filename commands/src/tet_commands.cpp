@@ -83,6 +83,13 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
       throw InvalidInput(names.input + ": " + e.what());
     }
   }
+  // The user's sizes (a patch's by its name, so after the patches are found).
+  std::shared_ptr<const SizeField> size_field;
+  try {
+    size_field = user_size_field(command.size, soup);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(names.input + ": " + e.what());
+  }
   // The surface as a PLC (prepare_plc.h): an open height field extruded when asked, else checked.
   std::optional<double> depth;
   if (command.extrude_depth > 0 || command.extrude_relative > 0) {
@@ -113,7 +120,7 @@ TetOutcome tetrahedralize_command(const TriangleSoup& surface, const Tetrahedral
   const CommandHooks bounded = hooks.until_deadline();
   TetParams params = command.params;
   params.cancelled = bounded.cancelled;
-  if (command.size.any_set()) params.size_field = uniform_size_field(command.size, bbox_diagonal(soup));
+  params.size_field = size_field;
   json["switches"] = tetgen_switches(params, 0);
   try {
     outcome.tets = tetrahedralize_plc(plc, params);

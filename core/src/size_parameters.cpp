@@ -1,7 +1,9 @@
 #include "meshprep/core/size_parameters.h"
 
 #include "meshprep/core/errors.h"
+#include "meshprep/core/patch_names.h"
 
+#include <cmath>
 #include <limits>
 
 namespace meshprep {
@@ -25,7 +27,15 @@ const SizeParameters& size_parameters() {
        "fidelity bound's chord limits them",
        {0, 10000, true, false}},
       {"thickness_layers", "--thickness-layers", "elements across a thin wall at least (its thickness over this); unset: 1",
-       {0, 1000, true, false}}};
+       {0, 1000, true, false}},
+      {"patches", "--size",
+       "the element size on the faces of a named boundary patch (a length or a percentage): finer than the size "
+       "around it, graded from it by the grading",
+       {}},
+      {"regions", "",
+       "boxes and balls of space with an element size of their own, finer than the size around them, graded from "
+       "them by the grading",
+       {}}};
   return parameters;
 }
 
@@ -36,6 +46,19 @@ void check_size_params(const SizeParams& params) {
   if (params.grading) check_parameter("size", info.grading, *params.grading);
   if (params.curvature_points) check_parameter("size", info.curvature_points, *params.curvature_points);
   if (params.thickness_layers) check_parameter("size", info.thickness_layers, *params.thickness_layers);
+  for (const auto& [name, size] : params.patch_sizes) {
+    if (!is_valid_name(name)) throw InvalidInput("size: '" + name + "' is no patch name: " + kNameRule);
+    check_parameter("size", info.size, size.value);
+  }
+  for (const SizeRegion& region : params.regions) {
+    check_parameter("size", info.size, region.size.value);
+    const bool finite = region.lo.allFinite() && region.hi.allFinite() && region.center.allFinite() && std::isfinite(region.radius);
+    if (!finite) throw InvalidInput("size: a region's coordinates must be finite");
+    if (region.shape == SizeRegion::Shape::box && (region.lo.array() > region.hi.array()).any())
+      throw InvalidInput("size: a box region's lower corner must be below its upper corner in x, y and z");
+    if (region.shape == SizeRegion::Shape::sphere && !(region.radius > 0))
+      throw InvalidInput("size: a sphere region's radius must be positive, not " + parameter_text(region.radius));
+  }
   if (params.size_min && params.size_max && params.size_min->relative == params.size_max->relative &&
       params.size_min->value > params.size_max->value)
     throw InvalidInput("size: size_min (" + length_text(*params.size_min) + ") is over size_max (" +

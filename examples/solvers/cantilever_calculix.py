@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """A cantilever meshed by meshprep and solved by CalculiX, against Euler-Bernoulli.
 
-Usage: cantilever_calculix.py [--meshprep BIN] [--order 1|2] [--work DIR]
+Usage: cantilever_calculix.py [--meshprep BIN] [--order 1|2] [--work DIR] [--size LENGTH|NAME=LENGTH ...]
 
 1. parts.py writes beam.obj, a 20 x 1 x 1 beam whose OBJ groups name its faces: fixed (x = 0),
    loaded (the top, y = 1), free (x = 20), bottom, sides.
 2. `meshprep pipeline beam.obj -o DIR/mesh --format inp --config cantilever.json [--order 2]`
    writes DIR/mesh/tets.inp: C3D4 tets (C3D10 with --order 2), a node set and an element-face
-   surface per patch, named as the groups.
+   surface per patch, named as the groups. Each --size is passed on: `--size 0.25 --size fixed=0.05`
+   asks for tets of 0.25 with 0.05 on the clamped end, graded between (docs/size_field.md).
 3. `ccx -i cantilever` runs cantilever.inp, which includes tets.inp: clamped on "fixed", a pressure p
    on "loaded"; it prints the displacements of "free" into cantilever.dat.
 4. The mean vertical displacement of the free end is compared with Euler-Bernoulli's tip deflection
@@ -50,6 +51,7 @@ def main():
     parser.add_argument("--meshprep", default=str(HERE.parents[1] / "build" / "bin" / "meshprep"))
     parser.add_argument("--order", type=int, choices=(1, 2), default=1)
     parser.add_argument("--work", default="cantilever")
+    parser.add_argument("--size", action="append", default=[], help="passed on to meshprep pipeline --size")
     args = parser.parse_args()
     if shutil.which("ccx") is None:
         sys.exit("ccx is not on PATH (apt-get install calculix-ccx)")
@@ -60,6 +62,8 @@ def main():
                "--config", str(HERE / "cantilever.json"), "--quiet"]
     if args.order == 2:
         command += ["--order", "2"]
+    for size in args.size:
+        command += ["--size", size]
     subprocess.run(command, check=True)
     shutil.copy(work / "mesh" / "tets.inp", work / "tets.inp")
     shutil.copy(HERE / "cantilever.inp", work / "cantilever.inp")

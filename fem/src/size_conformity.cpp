@@ -57,6 +57,7 @@ SizeConformity measure_size_conformity(const TetMesh& mesh, const SizeField& fie
   c.ratio_median = percentile(ratios, 0.5);
   c.ratio_p95 = percentile(ratios, 0.95);
   c.ratio_p99 = percentile(ratios, 0.99);
+  c.edge_ratios = std::move(ratios);
   std::vector<double> excess;
   const detail::TetFaces faces(mesh.tets);
   const auto& entries = faces.entries();

@@ -371,6 +371,8 @@ class Run {
     const Clock::time_point start = Clock::now();
     const PatchResult r = on_input([&] { return find_patches(result_.input_surface, params); });
     set_face_patches(mesh_, result_.input_surface.patches, result_.input_surface.patch_names);
+    // A size asked for a patch the surface does not have is a typo to name now, not after the work.
+    on_input([&] { return patch_size_demands(config_.size, result_.input_surface, result_.input_quality.bbox_diagonal); });
     record.seconds = seconds_since(start);
     fill_shape(record, result_.input_quality);
     record.details = to_json(r);
@@ -530,7 +532,7 @@ class Run {
     if (std::optional<SurfacePlc> plc = prepare_tet_input(record)) {
       params.keep_surface = config_.tetrahedralize.keep_surface.value_or(!result_.extrusion_depth);
       if (config_.size.any_set() && !result_.size_field)
-        result_.size_field = uniform_size_field(config_.size, result_.final_quality.bbox_diagonal);
+        result_.size_field = on_input([&] { return user_size_field(config_.size, result_.surface); });
       params.size_field = result_.size_field;
       params.cancelled = [this] { return stop_or_deadline(); };
       try {

@@ -103,29 +103,34 @@ Key number_or_auto(const char* section, const ParameterInfo& info, std::optional
 }
 
 // A length (core/size_field.h): a positive number, "2%" (of the diagonal), or "auto" (unset).
+// A length from the file: a positive number or "N%"; nullopt for anything else.
+std::optional<Length> length_from(const Json& v) {
+  if (v.is_number() && v.get<double>() > 0 && std::isfinite(v.get<double>())) return Length{v.get<double>(), false};
+  if (!v.is_string()) return std::nullopt;
+  try {
+    return parse_length(v.get<std::string>(), "");
+  } catch (const InvalidInput&) {
+    return std::nullopt;
+  }
+}
+
+OrderedJson length_json(const Length& length) {
+  return length.relative ? OrderedJson(length_text(length)) : OrderedJson(length.value);
+}
+
 Key length_or_auto(const char* section, const ParameterInfo& info, std::optional<Length>& field) {
   const std::string type = "positive number, \"N%\" (of the diagonal) or \"auto\"";
   return {section, info.key, type, info.help,
-          [&field, type, key = info.key](const Json& v) {
+          [&field, type](const Json& v) {
             if (v.is_string() && v.get<std::string>() == "auto") {
               field.reset();
               return;
             }
-            if (v.is_number() && v.get<double>() > 0 && std::isfinite(v.get<double>())) {
-              field = Length{v.get<double>(), false};
-              return;
-            }
-            if (!v.is_string()) throw BadValue{"expected a " + type + ", not " + shown(v)};
-            try {
-              field = parse_length(v.get<std::string>(), key);
-            } catch (const InvalidInput&) {
-              throw BadValue{"expected a " + type + ", not " + shown(v)};
-            }
+            const std::optional<Length> length = length_from(v);
+            if (!length) throw BadValue{"expected a " + type + ", not " + shown(v)};
+            field = length;
           },
-          [&field] {
-            if (!field) return OrderedJson("auto");
-            return field->relative ? OrderedJson(length_text(*field)) : OrderedJson(field->value);
-          }};
+          [&field] { return field ? length_json(*field) : OrderedJson("auto"); }};
 }
 
 Key count(const char* section, const ParameterInfo& info, std::size_t& field) {
@@ -327,7 +332,69 @@ std::vector<Key> size_keys(SizeParams& s) {
           length_or_auto("size", info.size_max, s.size_max),
           number_or_auto("size", info.grading, s.grading),
           number_or_auto("size", info.curvature_points, s.curvature_points),
-          number_or_auto("size", info.thickness_layers, s.thickness_layers)};
+          number_or_auto("size", info.thickness_layers, s.thickness_layers),
+          {"size", info.patch_sizes.key, "an object {\"NAME\": length, ...}", info.patch_sizes.help,
+           [&s](const Json& v) {
+             if (!v.is_object()) throw BadValue{"expected an object {\"NAME\": length}, not " + shown(v)};
+             s.patch_sizes.clear();
+             for (const auto& [name, size] : v.items()) {
+               const std::optional<Length> length = length_from(size);
+               if (!length) throw BadValue{"the size of '" + name + "' is no positive number or \"N%\": " + shown(size)};
+               s.patch_sizes[name] = *length;
+             }
+           },
+           [&s] {
+             OrderedJson sizes = OrderedJson::object();
+             for (const auto& [name, size] : s.patch_sizes) sizes[name] = length_json(size);
+             return sizes;
+           }},
+          {"size", info.regions.key,
+           "an array of {\"box\": [x0, y0, z0, x1, y1, z1], \"size\": length} and {\"sphere\": [x, y, z, r], \"size\": "
+           "length}",
+           info.regions.help,
+           [&s](const Json& v) {
+             const std::string expected = "expected an array of {\"box\": [x0, y0, z0, x1, y1, z1], \"size\": length} or "
+                                          "{\"sphere\": [x, y, z, r], \"size\": length}, not ";
+             if (!v.is_array()) throw BadValue{expected + shown(v)};
+             s.regions.clear();
+             for (const Json& item : v) {
+               const auto numbers = [&item](const char* shape, std::size_t count) {
+                 const Json& list = item.at(shape);
+                 bool ok = list.is_array() && list.size() == count;
+                 for (std::size_t i = 0; ok && i < count; ++i) ok = list[i].is_number();
+                 return ok;
+               };
+               if (!item.is_object() || item.size() != 2 || !item.contains("size") ||
+                   !((item.contains("box") && numbers("box", 6)) || (item.contains("sphere") && numbers("sphere", 4))))
+                 throw BadValue{expected + shown(item)};
+               const std::optional<Length> length = length_from(item.at("size"));
+               if (!length) throw BadValue{"a region's size is no positive number or \"N%\": " + shown(item.at("size"))};
+               SizeRegion region;
+               region.size = *length;
+               if (item.contains("box")) {
+                 const std::vector<double> c = item.at("box").get<std::vector<double>>();
+                 region.lo = Vec3(c[0], c[1], c[2]);
+                 region.hi = Vec3(c[3], c[4], c[5]);
+               } else {
+                 const std::vector<double> c = item.at("sphere").get<std::vector<double>>();
+                 region.shape = SizeRegion::Shape::sphere;
+                 region.center = Vec3(c[0], c[1], c[2]);
+                 region.radius = c[3];
+               }
+               s.regions.push_back(region);
+             }
+           },
+           [&s] {
+             OrderedJson regions = OrderedJson::array();
+             for (const SizeRegion& r : s.regions) {
+               OrderedJson item;
+               if (r.shape == SizeRegion::Shape::box) item["box"] = {r.lo.x(), r.lo.y(), r.lo.z(), r.hi.x(), r.hi.y(), r.hi.z()};
+               else item["sphere"] = {r.center.x(), r.center.y(), r.center.z(), r.radius};
+               item["size"] = length_json(r.size);
+               regions.push_back(item);
+             }
+             return regions;
+           }}};
 }
 
 std::vector<Key> quality_keys(PipelineConfig::Quality& q) {

@@ -291,6 +291,50 @@ std::string patch_section(const PipelineResult& r) {
   return out + "</table>\n</div>\n" + patch_picture_html(r.surface);
 }
 
+// The size field the surface and the tets followed, and how they follow it: the figures, the
+// histogram of the tet edges' length / h, and the boundary coloured by it.
+std::string size_section(const PipelineResult& r) {
+  if (!r.size_field || !r.size_conformity || !r.tets) return {};
+  const SizeField& field = *r.size_field;
+  const SizeConformity& c = *r.size_conformity;
+  std::string out = "<h2>Element size</h2>\n<p>The size field h(x) the surface's remeshing and the tets followed "
+                    "(docs/size_field.md), and each tet edge's length over h at its midpoint.</p>\n"
+                    "<div class=\"tables\">\n<table>\n<caption>Size field</caption>\n";
+  out += row({"longest h (the size where nothing asks for less)", figure(field.longest())});
+  out += row({"shortest h asked", figure(field.shortest())});
+  out += row({"grading", figure(field.grading())});
+  out += row({"point demands (curvature, thickness, patches)", std::to_string(field.demands())});
+  out += row({"regions", std::to_string(field.regions())});
+  out += "</table>\n<table>\n<caption>Tet edges against it</caption>\n";
+  out += row({"edges", std::to_string(c.edges)});
+  out += row({"length / h within [" + figure(kSizeBandLow) + ", " + figure(kSizeBandHigh) + "]", percent(c.within_band)});
+  out += row({"length / h p5 / median / p95", figure(c.ratio_p05) + " / " + figure(c.ratio_median) + " / " + figure(c.ratio_p95)});
+  out += row({"grading excess p99 / max", figure(c.grading_excess_p99) + " / " + figure(c.grading_excess_max)});
+  out += "</table>\n</div>\n<div class=\"histograms\">\n";
+  html::HistogramOptions ratio;
+  ratio.title = "Tet edge length / h";
+  ratio.x_label = "length over the size asked at the edge's midpoint   (1 = as asked)";
+  ratio.unit = "edges";
+  ratio.lo = 0;
+  ratio.hi = 3;
+  ratio.bins = 60;
+  ratio.overflow = true;
+  ratio.markers = {{"band " + figure(kSizeBandLow), kSizeBandLow}, {"median " + figure(c.ratio_median), c.ratio_median},
+                   {"band " + figure(kSizeBandHigh), kSizeBandHigh}};
+  out += html::svg_histogram(c.edge_ratios, ratio) + "</div>\n";
+  // The boundary as the tets have it, each face by its mean edge over h at its centroid.
+  TriangleSoup boundary;
+  boundary.points = r.tets->points;
+  boundary.triangles = r.tets->boundary_faces;
+  std::vector<double> ratios;
+  ratios.reserve(boundary.triangles.size());
+  for (const Triangle& t : boundary.triangles) {
+    const Vec3 &a = boundary.points[t[0]], &b = boundary.points[t[1]], &c3 = boundary.points[t[2]];
+    ratios.push_back(((b - a).norm() + (c3 - b).norm() + (a - c3).norm()) / 3 / field((a + b + c3) / 3.0));
+  }
+  return out + size_ratio_picture_html(boundary, ratios);
+}
+
 std::string config_section(const PipelineConfig& config) {
   return "<h2>Configuration</h2>\n<details><summary>The effective configuration (pipeline.json replays the run "
          "with <code>--config</code>)</summary>\n<pre>" +
@@ -309,7 +353,7 @@ std::string pipeline_report_html(const PipelineResult& r, const PipelineConfig& 
   return html::page_start(title) + "<h1>meshprep pipeline: <span class=\"file\">" + escape(r.input) + "</span></h1>\n" +
          headline(r, config) + "<p>" + escape(intro.str()) + "</p>\n" + readiness_section(r, config) + "<h2>The final surface</h2>\n" +
          surface_picture_html(r.surface, r.final_quality) + stage_table(r) + taken_back_section(r) + shape_histograms(r) +
-         patch_section(r) + tet_section(r, config) + config_section(config) +
+         patch_section(r) + tet_section(r, config) + size_section(r) + config_section(config) +
          html::page_end("meshprep " MESHPREP_VERSION " pipeline report.");
 }
 

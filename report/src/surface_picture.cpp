@@ -42,6 +42,31 @@ std::string legend() {
   return svg + "</svg>\n";
 }
 
+// The size ratio's colour scale: log2 of length / h from -1 (half the size asked) to 1 (twice).
+constexpr double kRatioScaleLow = -1, kRatioScaleHigh = 1;
+
+std::array<std::uint8_t, 3> ratio_colour(double ratio) {
+  return diverging_colour(ratio > 0 ? std::log2(ratio) : -INFINITY, kRatioScaleLow, kRatioScaleHigh);
+}
+
+std::string ratio_legend() {
+  constexpr int width = 300, steps = 60;
+  std::string svg = "<svg width=\"" + std::to_string(width + 40) +
+                    "\" height=\"46\" role=\"img\" aria-label=\"colour scale of edge length over the size asked\">\n";
+  for (int i = 0; i < steps; ++i) {
+    const auto c = ratio_colour(std::exp2(kRatioScaleLow + (kRatioScaleHigh - kRatioScaleLow) * (i + 0.5) / steps));
+    svg += "<rect x=\"" + std::to_string(20 + i * width / steps) + "\" y=\"4\" width=\"" +
+           std::to_string(width / steps + 1) + "\" height=\"16\" fill=\"rgb(" + std::to_string(c[0]) + "," +
+           std::to_string(c[1]) + "," + std::to_string(c[2]) + ")\"/>\n";
+  }
+  for (const double tick : {0.5, 0.7, 1.0, 1.4, 2.0}) {
+    const double x = 20 + width * (std::log2(tick) - kRatioScaleLow) / (kRatioScaleHigh - kRatioScaleLow);
+    svg += "<text x=\"" + format_fixed(x, 1) + "\" y=\"36\" font-size=\"12\" text-anchor=\"middle\">" +
+           (tick == 0.5 ? "\u2264" : "") + format_number(tick, 2) + (tick == 2.0 ? "+" : "") + "</text>\n";
+  }
+  return svg + "</svg>\n";
+}
+
 }  // namespace
 
 std::vector<SurfaceView> report_views(const TriangleSoup& soup, int width, int height) {
@@ -101,6 +126,17 @@ std::string surface_picture_html(const TriangleSoup& soup, const QualityReport& 
   return "<div class=\"pictures\">\n" + figures(soup, colours, "coloured by radius ratio") + "<figure>" + legend() +
          "<figcaption>Faces coloured by radius ratio R / (2 r): 1 is equilateral; 3 and above, red, is a sliver. "
          "Rendered by meshprep (z-buffer, hidden surfaces removed).</figcaption></figure>\n</div>\n";
+}
+
+std::string size_ratio_picture_html(const TriangleSoup& soup, const std::vector<double>& face_ratios) {
+  if (soup.triangles.empty() || face_ratios.size() != soup.triangles.size()) return {};
+  std::vector<std::array<std::uint8_t, 3>> colours;
+  colours.reserve(face_ratios.size());
+  for (const double ratio : face_ratios) colours.push_back(ratio_colour(ratio));
+  return "<div class=\"pictures\">\n" + figures(soup, colours, "coloured by edge length over the size asked") +
+         "<figure>" + ratio_legend() +
+         "<figcaption>Boundary faces coloured by their mean edge length over the size field's h at their centroid: "
+         "white as asked, blue finer, red coarser (log scale).</figcaption></figure>\n</div>\n";
 }
 
 std::string patch_picture_html(const TriangleSoup& soup) {

@@ -24,6 +24,18 @@ using Rgb = std::array<std::uint8_t, 3>;
 
 // ColorBrewer's RdYlGn, from green (good) to red (bad).
 constexpr Colour kScale[] = {{26, 152, 80}, {145, 207, 96}, {254, 224, 139}, {252, 141, 89}, {215, 48, 39}};
+// ColorBrewer's RdBu, from blue (low) through near white to red (high).
+constexpr Colour kDivergingScale[] = {{33, 102, 172}, {146, 197, 222}, {247, 247, 247}, {244, 165, 130}, {178, 24, 43}};
+
+template <std::size_t stops>
+std::array<std::uint8_t, 3> blend(const Colour (&scale)[stops], double fraction) {
+  const double s = std::clamp(fraction, 0.0, 1.0) * (stops - 1);
+  const int i = std::min(static_cast<int>(stops) - 2, static_cast<int>(s));
+  const double f = s - i;
+  std::array<std::uint8_t, 3> c{};
+  for (int k = 0; k < 3; ++k) c[k] = static_cast<std::uint8_t>(std::lround((1 - f) * scale[i][k] + f * scale[i + 1][k]));
+  return c;
+}
 
 // The camera frame: x to the right, y up, z towards the viewer.
 struct Camera {
@@ -127,13 +139,12 @@ void fill_triangle(Canvas& canvas, const Vec2 (&q)[3], const double (&z)[3], con
 
 std::array<std::uint8_t, 3> quality_colour(double value, double good, double bad) {
   if (!std::isfinite(value) && !(value < 0)) return {120, 0, 20};
-  constexpr int stops = sizeof kScale / sizeof kScale[0];
-  const double s = std::clamp((value - good) / (bad - good), 0.0, 1.0) * (stops - 1);
-  const int i = std::min(stops - 2, static_cast<int>(s));
-  const double f = s - i;
-  std::array<std::uint8_t, 3> c{};
-  for (int k = 0; k < 3; ++k) c[k] = static_cast<std::uint8_t>(std::lround((1 - f) * kScale[i][k] + f * kScale[i + 1][k]));
-  return c;
+  return blend(kScale, (value - good) / (bad - good));
+}
+
+std::array<std::uint8_t, 3> diverging_colour(double value, double low, double high) {
+  if (std::isnan(value)) return {150, 150, 150};
+  return blend(kDivergingScale, (value - low) / (high - low));
 }
 
 RgbImage render_surface(const TriangleSoup& soup, const std::vector<double>& face_values, double good, double bad,

@@ -271,6 +271,27 @@ def test_size_keyword_is_the_command_lines_size(tmp_path, keywords):
     assert report["size_conformity"]["ratio"]["p99"] <= 1.5
 
 
+def test_patch_sizes_are_the_command_lines(tmp_path):
+    """size={"patches": {...}} is --size NAME=LENGTH: the same tets, finer on that patch; an unknown
+    name is bad input, named with the surface's patches."""
+    points, faces = cube_surface()
+    source = tmp_path / "cube.off"
+    meshprep.Surface(points, faces).write(source)
+    cli_json = tmp_path / "cli.json"
+    run = run_cli("tetrahedralize", source, "-o", tmp_path / "cli.msh", "--size", "20%", "--size", "patch_1=5%",
+                  "--json", cli_json)
+    assert run.returncode == 0, run.stderr
+    result = meshprep.tetrahedralize(meshprep.Surface(points, faces), size={"size": "20%", "patches": {"patch_1": "5%"}})
+    assert_same_figures(result.report, json.loads(cli_json.read_text()))
+    tets = result.tets
+    tag = {name: tag for tag, name in tets.patch_names.items()}
+    faces_on = {name: int((tets.patches == tag[name]).sum()) for name in ("patch_1", "patch_2")}
+    # Sizes 4x finer: about 16x the faces on an equal face of the cube.
+    assert faces_on["patch_1"] >= 8 * faces_on["patch_2"], faces_on
+    with pytest.raises(meshprep.InputError, match="no patch named 'patch_9'"):
+        meshprep.tetrahedralize(meshprep.Surface(points, faces), size={"patches": {"patch_9": "5%"}})
+
+
 def test_pipeline_gives_the_command_lines_summary(tmp_path):
     source = DATA / "example004.stl"
     run = run_cli("pipeline", source, "-o", tmp_path / "cli", "--quiet")

@@ -45,7 +45,11 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
     base_ = std::sqrt(area / (kEquilateralArea * static_cast<double>(std::max<std::size_t>(1, mesh.n_faces()))));
   }
   if (size.size_max) base_ = std::min(base_, size.size_max->resolved(diagonal));
-  const double floor = size.size_min ? std::min(size.size_min->resolved(diagonal), base_) : std::min(rules.chord_tolerance, base_);
+  // The floor: the user's size_min, else the chord tolerance, but never over a size the user asked
+  // for a patch or region.
+  const double floor =
+      size.size_min ? std::min(size.size_min->resolved(diagonal), base_)
+                    : std::min({rules.chord_tolerance, base_, smallest_local_size(size, diagonal)});
   const double layers = size.thickness_layers.value_or(1);
   // Only demands below the base length count.
   const auto demand = [&](const Vec3& p, double length) {
@@ -75,6 +79,8 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
     for (std::size_t k = 0; k < pieces && demands_.size() < most_demands; ++k)
       demand(a + (b - a) * ((static_cast<double>(k) + 0.5) / static_cast<double>(pieces)), chord);
   }
+  if (!size.patch_sizes.empty())
+    for (const SizeDemand& d : patch_size_demands(size, soup_from_mesh(mesh), diagonal)) demand(d.point, d.length);
   if (closed) {
     const double inward = signed_volume(MeshSoupView(mesh)) > 0 ? -1 : 1;
     // The reference is the input here: each face's rays skip the face itself.
@@ -90,7 +96,7 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
                        layers, most_demands, 0);
     }
   }
-  field_ = std::make_shared<SizeField>(demands_, base_, size.grading_used(), floor);
+  field_ = std::make_shared<SizeField>(demands_, base_, size.grading_used(), floor, region_demands(size, diagonal));
   demands_.clear();
   // Faces the field asks for: each input face's area over the equilateral triangle of the field's
   // length, the face cut into quarters until its pieces are no longer than that length (a needle

@@ -48,7 +48,7 @@ struct TetrahedralizeCommand {
   TetParams params;
   TetFinishing finishing;
   PatchParams patches;  ///< the boundary patches the tets' boundary tags come from
-  /// The tets follow the user's sizes (uniform_size_field: no curvature or thickness of their own;
+  /// The tets follow the user's sizes (user_size_field: no curvature or thickness of their own;
   /// the surface is not remeshed: `enhance --size` first, or the pipeline, does that).
   SizeParams size;
   /// An open height field is closed into a block with a base this far below it: absolute if > 0,

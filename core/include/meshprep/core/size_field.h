@@ -15,6 +15,7 @@
 #include "meshprep/core/mesh.h"
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,19 @@ Length parse_length(const std::string& text, const std::string& what);
 /// "0.5", "2%".
 std::string length_text(const Length& length);
 
+/// A box [lo, hi] or a ball (center, radius) of space, where a size holds.
+struct SizeRegion {
+  enum class Shape { box, sphere };
+  Shape shape = Shape::box;
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  ///< a box's corners (lo <= hi)
+  Vec3 center = Vec3::Zero();                 ///< a ball's
+  double radius = 0;
+  Length size;  ///< the elements' size inside it
+
+  /// The distance from x to the region (0 inside).
+  double distance(const Vec3& x) const;
+};
+
 /// What the user asks of the element size. The defaults ask nothing: the surface's own demands
 /// (its density, curvature and thickness) make the field.
 struct SizeParams {
@@ -51,9 +65,17 @@ struct SizeParams {
   std::optional<double> curvature_points;
   /// At least this many elements across a thin wall (its thickness over this); unset: 1.
   std::optional<double> thickness_layers;
+  /// The size on the faces of a named patch (--size NAME=LENGTH): a patch's name, matched without
+  /// regard to case, to its size. A size refines: where the field asks for less, that holds.
+  std::map<std::string, Length> patch_sizes;
+  /// Boxes and balls with a size of their own (the configuration's size.regions); refine too.
+  std::vector<SizeRegion> regions;
 
   /// The user asked for a size (any field but the grading set): the tets then follow the field too.
-  bool any_set() const { return size || size_min || size_max || curvature_points || thickness_layers; }
+  bool any_set() const {
+    return size || size_min || size_max || curvature_points || thickness_layers || !patch_sizes.empty() ||
+           !regions.empty();
+  }
   /// The grading to use: the one set, else kSizeGrading when a size is set, else kSurfaceGrading.
   double grading_used() const;
 };
@@ -72,12 +94,20 @@ struct SizeDemand {
   double length = 0;
 };
 
+/// A length asked for over a whole region of space (h_s + g * distance to the region outside it).
+struct RegionDemand {
+  SizeRegion region;  ///< its size is not read: `length` is the resolved one
+  double length = 0;
+};
+
 class SizeField {
  public:
   /// `longest`: the length where no demand asks for less (> 0, finite); `shortest` the floor
   /// (in [0, longest]); `grading` >= 1. Demands at or over `longest` change nothing and are dropped.
   /// \throws InvalidInput when a bound or the grading is out of range.
-  SizeField(const std::vector<SizeDemand>& demands, double longest, double grading, double shortest = 0);
+  /// `regions` ask for their length over a volume, graded outside it as a point's demand is.
+  SizeField(const std::vector<SizeDemand>& demands, double longest, double grading, double shortest = 0,
+            std::vector<RegionDemand> regions = {});
   ~SizeField();
   SizeField(SizeField&&) noexcept;
   SizeField& operator=(SizeField&&) noexcept;
@@ -89,6 +119,7 @@ class SizeField {
   double shortest() const { return shortest_demand_ * scale_; }
   double grading() const { return 1 + slope_; }
   std::size_t demands() const;
+  std::size_t regions() const { return regions_.size(); }
   /// Every length times `factor` (> 1: coarser).
   void scale(double factor) { scale_ *= factor; }
   double scale_factor() const { return scale_; }
@@ -99,13 +130,27 @@ class SizeField {
  private:
   struct Levels;
   std::unique_ptr<Levels> levels_;
+  std::vector<RegionDemand> regions_;
   double longest_ = 0, floor_ = 0, slope_ = 0, shortest_demand_ = 0, scale_ = 1;
   Vec3 offset_ = Vec3::Zero();
 };
 
-/// The user's sizes alone, with no surface's demands (the tets of a surface no remeshing followed):
-/// h = the size, at most size_max, at least size_min, lengths resolved against `diagonal`; null
-/// when neither size nor size_max is set.
-std::shared_ptr<const SizeField> uniform_size_field(const SizeParams& params, double diagonal);
+/// The demands of the user's patch sizes on `surface`: over each face of a patch that has a size,
+/// points no farther apart than half that size (the face cut into quarters until its pieces are
+/// no longer), so that the field is within (1 + (G - 1) / 4) of it anywhere on the face.
+/// \throws InvalidInput "size: no patch named 'X' (the surface's patches: a, b)" for a name the
+/// surface does not have.
+std::vector<SizeDemand> patch_size_demands(const SizeParams& params, const TriangleSoup& surface, double diagonal);
+/// The user's regions with their sizes resolved against `diagonal`.
+std::vector<RegionDemand> region_demands(const SizeParams& params, double diagonal);
+/// The user's smallest patch or region size (infinity without any).
+double smallest_local_size(const SizeParams& params, double diagonal);
+
+/// The user's sizes alone, with no curvature or thickness demands of the surface (the tets of a
+/// surface no remeshing followed): h = the size, else the surface's own density (at each face's
+/// centroid the mean of its edges, graded into the volume: Gmsh's default), at most size_max,
+/// refined on the patches and regions that have a size of their own, at least size_min; lengths
+/// resolved against `surface`'s bounding-box diagonal. Null when the user set none of these.
+std::shared_ptr<const SizeField> user_size_field(const SizeParams& params, const TriangleSoup& surface);
 
 }  // namespace meshprep

@@ -9,6 +9,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <cstddef>
+#include <vector>
 
 namespace meshprep {
 
@@ -24,6 +25,8 @@ struct SizeConformity {
   /// ratio of the field at their centroids (>= 1): how much more than the field allows their sizes
   /// jump. Its 99th percentile and largest value.
   double grading_excess_p99 = 0, grading_excess_max = 0;
+  /// Every edge's length / h, sorted (for the report's histogram; not in the JSON).
+  std::vector<double> edge_ratios;
 };
 
 SizeConformity measure_size_conformity(const TetMesh& tets, const SizeField& field);

@@ -30,6 +30,10 @@ struct RgbImage {
 /// NaN and +inf are dark red. Works either way round (good > bad for angles).
 std::array<std::uint8_t, 3> quality_colour(double value, double good, double bad);
 
+/// The colour of `value` on a diverging scale: blue at `low` (and under), near white half-way, red
+/// at `high` (and over); NaN grey.
+std::array<std::uint8_t, 3> diverging_colour(double value, double low, double high);
+
 /// Render `soup` on a white background, face f coloured by quality_colour(face_values[f], good,
 /// bad), the surface scaled to fit the image with a margin.
 /// \throws InvalidInput if face_values has the wrong size, the view is degenerate (direction and
@@ -56,6 +60,11 @@ std::vector<SurfaceView> report_views(const TriangleSoup& soup, int width, int h
 /// The report's pictures of `soup` coloured by radius ratio (report.face_shapes), as an HTML
 /// fragment: inline PNG images (data URIs) with a caption and the colour legend.
 std::string surface_picture_html(const TriangleSoup& soup, const QualityReport& report);
+
+/// The pictures of `soup` coloured by face_ratios[f], a face's edge length over the size field's
+/// h (blue finer than asked, white as asked, red coarser; a log scale from 1/2 to 2), with the
+/// legend, as an HTML fragment; empty when the sizes do not match the faces.
+std::string size_ratio_picture_html(const TriangleSoup& soup, const std::vector<double>& face_ratios);
 
 /// The pictures of `soup` coloured by boundary patch (soup.patches), with a legend naming each
 /// patch, as an HTML fragment; empty when the surface has no patches.
