@@ -111,8 +111,9 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   sizing_rules.chord_tolerance = kChordShareOfBound * max_deviation;
   sizing_rules.max_faces = params.max_faces > 0 ? params.max_faces : std::max(kMaxFacesFloor, kMaxFacesPerInputFace * mesh.n_faces());
   sizing_rules.size = params.size;
-  detail::SizingField sizing(mesh, constraints, sizing_rules);
-  result.sizing_faces = sizing.estimated_faces();
+  std::optional<detail::SizingField> sizing;
+  sizing.emplace(mesh, constraints, sizing_rules);
+  result.sizing_faces = sizing->estimated_faces();
   detail::RemeshRules rules;
   rules.max_deviation = kRemeshShareOfBound * max_deviation;
   rules.target_min_angle_deg = params.target_min_angle_deg;
@@ -144,30 +145,46 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
     return false;
   };
   for (int attempt = 0;; ++attempt) {
-    counts = detail::remesh_to_sizing(mesh, constraints, sizing, rules);
+    counts = detail::remesh_to_sizing(mesh, constraints, *sizing, rules);
     if (counts.stopped_by_time) {
       result.stopped_by_time_limit = true;
       return taken_back("time limit", "the time limit came before it was done", std::nullopt);
     }
-    if (!counts.stopped_at_max_faces) break;
+    if (!counts.stopped_at_max_faces) {
+      const std::size_t found = find_self_intersections(MeshSoupView(mesh)).count;
+      if (found <= allowed_intersections) break;
+      // Graded from the corner edges, the finer faces can cross where two sheets pass close (bones'
+      // cut curves, repaired): once more without that grading, as before it, then taken back.
+      if (!sizing_rules.grade_from_corner_edges)
+        return taken_back("self-intersection",
+                          "it made the surface cross itself at " + std::to_string(found) + " face pairs (the input: " +
+                              std::to_string(allowed_intersections) + ")",
+                          found);
+      result.taken_back.push_back({"enhance", "self-intersection", "grading from the corner edges", 1,
+                                   "the remeshing graded from the corner edges crossed itself at " + std::to_string(found) +
+                                       " face pairs; remeshed again without that grading",
+                                   {{"self_intersections", static_cast<double>(found)}},
+                                   {{"self_intersections", static_cast<double>(allowed_intersections)}}});
+      mesh = before;
+      sizing_rules.grade_from_corner_edges = false;
+      sizing.emplace(mesh, constraints, sizing_rules);
+      result.sizing_faces = sizing->estimated_faces();
+      attempt = -1;
+      continue;
+    }
     if (attempt + 1 == kRemeshAttempts)
       return taken_back("face limit",
                         "its splits reached the face limit (" + std::to_string(rules.max_faces) + ") " +
                             std::to_string(kRemeshAttempts) + " times, the sizing field coarsened each time",
                         std::nullopt);
     mesh = before;
-    sizing.coarsen(kCoarsening);
+    sizing->coarsen(kCoarsening);
   }
-  result.sizing_shortest = sizing.shortest() / diagonal;
-  result.sizing_base = sizing.base_length() / diagonal;
-  result.sizing_capped = sizing.capped();
-  if (const std::size_t found = find_self_intersections(MeshSoupView(mesh)).count; found > allowed_intersections)
-    return taken_back("self-intersection",
-                      "it made the surface cross itself at " + std::to_string(found) + " face pairs (the input: " +
-                          std::to_string(allowed_intersections) + ")",
-                      found);
+  result.sizing_shortest = sizing->shortest() / diagonal;
+  result.sizing_base = sizing->base_length() / diagonal;
+  result.sizing_capped = sizing->capped();
   result.remeshed = true;
-  std::shared_ptr<SizeField> field = sizing.field();
+  std::shared_ptr<SizeField> field = sizing->field();
   field->move(shift);  // where the mesh is shifted back
   result.size_field = std::move(field);
   result.remesh_splits = counts.splits;

@@ -64,7 +64,19 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
       closed = false;
       continue;
     }
-    if (constraints.is_feature(e)) continue;
+    if (constraints.is_feature(e)) {
+      // A feature edge between two corners stays whatever the remeshing does: the faces around it
+      // are graded from its length, not dropped from the base length at once.
+      const auto h = mesh.halfedge_handle(e, 0);
+      // One shorter than the chord tolerance is below what the fidelity bound resolves (a plate's
+      // thickness under the bound): the knife-edge stage may move it, and grading from it there
+      // made the remeshing split the plate's walls into caps whose collapses thinned it by 12 %.
+      if (rules.grade_from_corner_edges && constraints.role(mesh.from_vertex_handle(h)) == VertexRole::Fixed &&
+          constraints.role(mesh.to_vertex_handle(h)) == VertexRole::Fixed &&
+          mesh.calc_edge_length(e) >= rules.chord_tolerance)
+        demand(to_eigen(mesh.calc_edge_midpoint(e)), mesh.calc_edge_length(e));
+      continue;
+    }
     const auto [curvature, width] = edge_curvature(mesh, e);
     if (!(curvature > 0)) continue;
     // Never finer than the input across the edge: below its facets' width the reference is flat

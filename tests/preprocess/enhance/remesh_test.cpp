@@ -67,7 +67,68 @@ TriangleSoup slab(double side, double thickness) {
   return s;
 }
 
+// The cube [0, side]^3 with its edge from (side, side, 0) to (side, side, side) chamfered `cut`
+// along both faces: a strip of two triangles whose short ends are edges between two corners.
+TriangleSoup chamfered_cube(double side, double cut) {
+  TriangleSoup s;
+  const auto point = [&s](double x, double y, double z) {
+    s.points.emplace_back(x, y, z);
+    return static_cast<std::uint32_t>(s.points.size() - 1);
+  };
+  const double a = side, b = side - cut;
+  const std::uint32_t o = point(0, 0, 0), x = point(a, 0, 0), y = point(0, a, 0), z = point(0, 0, a), zx = point(a, 0, a),
+                      yz = point(0, a, a), p1 = point(b, a, 0), p2 = point(a, b, 0), p3 = point(b, a, a), p4 = point(a, b, a);
+  // Each face as a polygon fanned from its first corner, oriented along its outward normal.
+  const auto face = [&s](const std::vector<std::uint32_t>& polygon, const Vec3& outward) {
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      Triangle t{polygon[0], polygon[i], polygon[i + 1]};
+      const Vec3 n = (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]);
+      if (n.dot(outward) < 0) std::swap(t[1], t[2]);
+      s.triangles.push_back(t);
+    }
+  };
+  face({o, x, zx, z}, -Vec3::UnitY());
+  face({o, z, yz, y}, -Vec3::UnitX());
+  face({o, y, p1, p2, x}, -Vec3::UnitZ());
+  face({z, zx, p4, p3, yz}, Vec3::UnitZ());
+  face({x, p2, p4, zx}, Vec3::UnitX());
+  face({y, yz, p3, p1}, Vec3::UnitY());
+  face({p1, p3, p4, p2}, Vec3(1, 1, 0));
+  return s;
+}
+
 }  // namespace
+
+// A CAD part's short edge between two corners stays; the faces around it grade up from its length
+// by the grading (1.5) instead of jumping to the part's size next to it, which would leave the
+// tets there no room for the goal.
+TEST(Remesh, FacesGradeUpFromAShortEdgeBetweenCorners) {
+  const double side = 10, cut = 0.2;
+  TriMesh mesh = mesh_from_soup(chamfered_cube(side, cut));
+  const EnhanceResult result = enhance(mesh, nullptr, [] {
+    EnhanceParams p;
+    p.remesh = EnhanceRemesh::On;
+    return p;
+  }());
+  ASSERT_TRUE(result.remeshed);
+  const double chamfer = cut * std::sqrt(2.0);
+  const Vec3 end(side - cut / 2, side - cut / 2, 0);  // the middle of the strip's end at z = 0
+  // An edge within distance d of the end asks for at most chamfer + 0.5 (d + its own length); the
+  // remeshing splits above 4/3 of the field. Without the grading the edges there reach the part's
+  // size (several units).
+  std::size_t near = 0;
+  for (const auto e : mesh.edges()) {
+    const Vec3 middle = to_eigen(mesh.calc_edge_midpoint(e));
+    const double d = (middle - end).norm();
+    if (d > 1.0) continue;
+    ++near;
+    const double length = mesh.calc_edge_length(e);
+    EXPECT_LE(length, 4.0 / 3.0 * (chamfer + 0.5 * (d + length))) << "at " << middle.transpose();
+  }
+  EXPECT_GE(near, 10u);
+  ASSERT_TRUE(result.size_field);
+  EXPECT_LE((*result.size_field)(end), chamfer * (1 + 1e-9));
+}
 
 TEST(Remesh, NeedlesAcrossAPlaneBecomeWellShapedInThePlane) {
   const TriangleSoup input = needle_rectangle();
