@@ -3,6 +3,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/size_field.h"
 #include "meshprep/core/size_parameters.h"
+#include "meshprep/core/user_size_demands.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

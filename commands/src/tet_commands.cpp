@@ -2,6 +2,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/size_parameters.h"
+#include "meshprep/core/user_size_demands.h"
 #include "meshprep/fem/size_conformity.h"
 #include "meshprep/fem/fem_check.h"
 #include "meshprep/fem/prepare_plc.h"

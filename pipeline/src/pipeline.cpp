@@ -3,6 +3,7 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
 #include "meshprep/core/mesh_patches.h"
+#include "meshprep/core/user_size_demands.h"
 #include "meshprep/fem/extrude.h"
 #include "meshprep/fem/improve_tets.h"
 #include "meshprep/fem/prepare_plc.h"

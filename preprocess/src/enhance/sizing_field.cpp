@@ -3,6 +3,7 @@
 #include "shared/triangle_angles.h"
 
 #include "meshprep/core/soup_view.h"
+#include "meshprep/core/user_size_demands.h"
 #include "meshprep/quality/surface_distance.h"
 #include "meshprep/quality/triangle_metrics.h"
 

@@ -2,8 +2,9 @@
 /// \file size_field.h
 /// The edge length a mesh aims at, anywhere in space: h(x). The surface's remeshing (preprocess)
 /// and the tets (fem) read the same field; the enhancement builds it (preprocess/src/enhance/
-/// sizing_field.h) from the demands a surface and its user make: a length wanted at a point (the
-/// user's size, the curvature, the thickness across a wall), and a grading.
+/// sizing_field.h, the user's own demands from user_size_demands.h) from the demands a surface
+/// and its user make: a length wanted at a point (the user's size, the curvature, the thickness
+/// across a wall) or over a region, and a grading.
 ///
 /// Grading: h is the largest function under every demand whose gradient is at most g = grading - 1,
 /// h(x) = min over demands s of (h_s + g |x - s|): the closed-form solution of gradient limiting,
@@ -134,23 +135,5 @@ class SizeField {
   double longest_ = 0, floor_ = 0, slope_ = 0, shortest_demand_ = 0, scale_ = 1;
   Vec3 offset_ = Vec3::Zero();
 };
-
-/// The demands of the user's patch sizes on `surface`: over each face of a patch that has a size,
-/// points no farther apart than half that size (the face cut into quarters until its pieces are
-/// no longer), so that the field is within (1 + (G - 1) / 4) of it anywhere on the face.
-/// \throws InvalidInput "size: no patch named 'X' (the surface's patches: a, b)" for a name the
-/// surface does not have.
-std::vector<SizeDemand> patch_size_demands(const SizeParams& params, const TriangleSoup& surface, double diagonal);
-/// The user's regions with their sizes resolved against `diagonal`.
-std::vector<RegionDemand> region_demands(const SizeParams& params, double diagonal);
-/// The user's smallest patch or region size (infinity without any).
-double smallest_local_size(const SizeParams& params, double diagonal);
-
-/// The user's sizes alone, with no curvature or thickness demands of the surface (the tets of a
-/// surface no remeshing followed): h = the size, else the surface's own density (at each face's
-/// centroid the mean of its edges, graded into the volume: Gmsh's default), at most size_max,
-/// refined on the patches and regions that have a size of their own, at least size_min; lengths
-/// resolved against `surface`'s bounding-box diagonal. Null when the user set none of these.
-std::shared_ptr<const SizeField> user_size_field(const SizeParams& params, const TriangleSoup& surface);
 
 }  // namespace meshprep
