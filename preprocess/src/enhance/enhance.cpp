@@ -154,8 +154,9 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
       const std::size_t found = find_self_intersections(MeshSoupView(mesh)).count;
       if (found <= allowed_intersections) break;
       // Graded from the corner edges, the finer faces can cross where two sheets pass close (bones'
-      // cut curves, repaired): once more without that grading, as before it, then taken back.
-      if (!sizing_rules.grade_from_corner_edges)
+      // cut curves, repaired): once more without that grading, as before it, then taken back. A
+      // field the corner edges asked nothing of would only repeat the same remeshing.
+      if (!sizing_rules.grade_from_corner_edges || sizing->corner_edge_demands() == 0)
         return taken_back("self-intersection",
                           "it made the surface cross itself at " + std::to_string(found) + " face pairs (the input: " +
                               std::to_string(allowed_intersections) + ")",

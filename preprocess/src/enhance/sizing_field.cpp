@@ -74,8 +74,10 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
       // made the remeshing split the plate's walls into caps whose collapses thinned it by 12 %.
       if (rules.grade_from_corner_edges && constraints.role(mesh.from_vertex_handle(h)) == VertexRole::Fixed &&
           constraints.role(mesh.to_vertex_handle(h)) == VertexRole::Fixed &&
-          mesh.calc_edge_length(e) >= rules.chord_tolerance)
+          mesh.calc_edge_length(e) >= rules.chord_tolerance && mesh.calc_edge_length(e) < base_) {
         demand(to_eigen(mesh.calc_edge_midpoint(e)), mesh.calc_edge_length(e));
+        ++corner_edge_demands_;
+      }
       continue;
     }
     const auto [curvature, width] = edge_curvature(mesh, e);

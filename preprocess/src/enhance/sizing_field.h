@@ -63,6 +63,8 @@ class SizingField {
   /// Faces the field asks for over the input (after the cap).
   std::size_t estimated_faces() const { return estimated_faces_; }
   bool capped() const { return field_->scale_factor() > 1; }
+  /// Demands the corner edges made (grade_from_corner_edges): none, and the field is as without it.
+  std::size_t corner_edge_demands() const { return corner_edge_demands_; }
   /// Every length times `factor` (> 1: fewer faces).
   void coarsen(double factor) { field_->scale(factor); }
 
@@ -81,6 +83,7 @@ class SizingField {
   double base_ = 0;
   std::shared_ptr<SizeField> field_;
   std::size_t estimated_faces_ = 0;
+  std::size_t corner_edge_demands_ = 0;
 };
 
 }  // namespace meshprep::detail
