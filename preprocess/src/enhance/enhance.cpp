@@ -101,6 +101,28 @@ constexpr std::size_t kSplitHeadroom = 4;
 constexpr int kRemeshAttempts = 3;
 // After remeshing, probes along the reference's bent edges are this fraction of a median edge apart.
 constexpr double kProbesPerEdge = 0.25;
+// A remeshing that made the surface cross itself is run again from the input, each crossing face
+// asking for this share of its mean edge, at most this many times, before it is taken back (once
+// was enough wherever it was: bones, camel, cheese, cow and hand; twice changed none of them).
+constexpr double kCrossingRefinement = 0.5;
+constexpr int kCrossingRefinements = 1;
+
+// Where a remeshing crossed itself, two sheets of the surface pass closer than its faces there
+// were long (hand's fingers, a cut curve's two sides): each crossing face asks for a finer length
+// at its centroid, which the field grades around, so the rest of the surface keeps its remeshing.
+void ask_finer_where_crossing(const SoupView& remeshed, const SelfIntersections& crossings,
+                              std::vector<SizeDemand>& demands) {
+  const auto ask = [&](std::size_t face) {
+    const Triangle& t = remeshed.triangles[face];
+    const Vec3 a = remeshed.points[t[0]], b = remeshed.points[t[1]], c = remeshed.points[t[2]];
+    const double mean_edge = ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
+    demands.push_back({(a + b + c) / 3, kCrossingRefinement * mean_edge});
+  };
+  for (const auto& [f, g] : crossings.pairs) {
+    ask(f);
+    ask(g);
+  }
+}
 
 // Remeshes the input to its sizing field; taken back if it made the surface cross itself.
 // Returns whether it was kept.
@@ -128,8 +150,10 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   detail::RemeshCounts counts;
   // The crossings are counted only where they are the reason: on a remeshing stopped half-way,
   // whose splits may have piled thousands of faces on one spot, the count could take minutes.
+  int crossing_refinements = 0;
   const auto taken_back = [&](const std::string& guard, const std::string& reason,
                               std::optional<std::size_t> intersections) {
+    result.remesh_crossing_refinements = crossing_refinements;
     const QualityTail remeshed = detail::measure_tail(mesh, params.target_min_angle_deg);
     TakenBack record{"enhance", guard, "remeshing", 1, reason + "; the input's own faces are enhanced instead",
                      {{"faces", static_cast<double>(mesh.n_faces())},
@@ -151,23 +175,30 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
       return taken_back("time limit", "the time limit came before it was done", std::nullopt);
     }
     if (!counts.stopped_at_max_faces) {
-      const std::size_t found = find_self_intersections(MeshSoupView(mesh)).count;
+      const MeshSoupView remeshed(mesh);
+      const SelfIntersections crossings = find_self_intersections(remeshed);
+      const std::size_t found = crossings.count;
       if (found <= allowed_intersections) break;
       // Graded from the corner edges, the finer faces can cross where two sheets pass close (bones'
-      // cut curves, repaired): once more without that grading, as before it, then taken back. A
-      // field the corner edges asked nothing of would only repeat the same remeshing.
-      if (!sizing_rules.grade_from_corner_edges || sizing->corner_edge_demands() == 0)
+      // cut curves, repaired; cow's): once more without that grading, as before it. A field the
+      // corner edges asked nothing of would only repeat the same remeshing.
+      if (sizing_rules.grade_from_corner_edges && sizing->corner_edge_demands() > 0) {
+        result.taken_back.push_back({"enhance", "self-intersection", "grading from the corner edges", 1,
+                                     "the remeshing graded from the corner edges crossed itself at " +
+                                         std::to_string(found) + " face pairs; remeshed again without that grading",
+                                     {{"self_intersections", static_cast<double>(found)}},
+                                     {{"self_intersections", static_cast<double>(allowed_intersections)}}});
+        sizing_rules.grade_from_corner_edges = false;
+      } else if (crossing_refinements < kCrossingRefinements) {
+        ++crossing_refinements;
+        ask_finer_where_crossing(remeshed, crossings, sizing_rules.crossing_demands);
+      } else {
         return taken_back("self-intersection",
                           "it made the surface cross itself at " + std::to_string(found) + " face pairs (the input: " +
-                              std::to_string(allowed_intersections) + ")",
+                              std::to_string(allowed_intersections) + "), also after a remeshing finer where it crossed",
                           found);
-      result.taken_back.push_back({"enhance", "self-intersection", "grading from the corner edges", 1,
-                                   "the remeshing graded from the corner edges crossed itself at " + std::to_string(found) +
-                                       " face pairs; remeshed again without that grading",
-                                   {{"self_intersections", static_cast<double>(found)}},
-                                   {{"self_intersections", static_cast<double>(allowed_intersections)}}});
+      }
       mesh = before;
-      sizing_rules.grade_from_corner_edges = false;
       sizing.emplace(mesh, constraints, sizing_rules);
       result.sizing_faces = sizing->estimated_faces();
       attempt = -1;
@@ -181,6 +212,7 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
     mesh = before;
     sizing->coarsen(kCoarsening);
   }
+  result.remesh_crossing_refinements = crossing_refinements;
   result.sizing_shortest = sizing->shortest() / diagonal;
   result.sizing_base = sizing->base_length() / diagonal;
   result.sizing_capped = sizing->capped();

@@ -32,6 +32,7 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
                     {"splits", result.remesh_splits},
                     {"collapses", result.remesh_collapses},
                     {"flips", result.remesh_flips},
+                    {"crossing_refinements", result.remesh_crossing_refinements},
                     {"sizing_shortest", result.sizing_shortest},
                     {"sizing_base", result.sizing_base},
                     {"sizing_faces", result.sizing_faces},

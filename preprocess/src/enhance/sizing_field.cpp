@@ -96,6 +96,7 @@ SizingField::SizingField(const TriMesh& mesh, const SurfaceConstraints& constrai
   }
   if (!size.patch_sizes.empty())
     for (const SizeDemand& d : patch_size_demands(size, soup_from_mesh(mesh), diagonal)) demand(d.point, d.length);
+  for (const SizeDemand& d : rules.crossing_demands) demand(d.point, d.length);
   if (closed) {
     const double inward = signed_volume(MeshSoupView(mesh)) > 0 ? -1 : 1;
     // The reference is the input here: each face's rays skip the face itself.

@@ -28,6 +28,9 @@ struct SizingRules {
   /// that the faces around it grade up from it (the tets next to a CAD part's short edges then can
   /// reach the goal: example014 11.8 -> 15.1 deg, text_on_cube 13.1 -> 15.0).
   bool grade_from_corner_edges = true;
+  /// Lengths asked where an earlier remeshing made the surface cross itself (two sheets closer
+  /// than its faces were long): held like any other demand, graded around.
+  std::vector<SizeDemand> crossing_demands;
 };
 
 /// The smallest of: the base length (the user's size, else the equilateral edge that tiles the
@@ -41,7 +44,7 @@ struct SizingRules {
 /// to the surface across: a plate needs edges no longer than it is thick, or its tets are flat)
 /// over thickness_layers, sampled at the centroids of the face's quarters, and theirs, until they
 /// are no longer than it; the user's patch sizes over their patches' faces and the user's regions
-/// (core/size_field.h). Each demand holds at its own point and relaxes with distance by the
+/// (core/size_field.h); and the crossing demands of an earlier remeshing. Each demand holds at its own point and relaxes with distance by the
 /// grading, never under size_min (else the chord tolerance, or the user's smallest patch or
 /// region size if less). Demands sit where they are measured, not at the corners of a needle that
 /// may be far away.
