@@ -39,9 +39,8 @@ void cover_triangle(const Corners& c, double spacing, double length, std::vector
 // its edges (Gmsh's default, the size at the boundary's points extended into the volume).
 void add_density_demands(const TriangleSoup& surface, std::vector<SizeDemand>& demands) {
   for (const auto& t : surface.triangles) {
-    const Vec3 &a = surface.points[t[0]], &b = surface.points[t[1]], &c = surface.points[t[2]];
-    const double length = ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
-    if (length > 0) demands.push_back({(a + b + c) / 3.0, length});
+    const SizeDemand own = face_density_demand(surface.points[t[0]], surface.points[t[1]], surface.points[t[2]]);
+    if (own.length > 0) demands.push_back(own);
   }
 }
 

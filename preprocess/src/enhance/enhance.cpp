@@ -114,9 +114,9 @@ void ask_finer_where_crossing(const SoupView& remeshed, const SelfIntersections&
                               std::vector<SizeDemand>& demands) {
   const auto ask = [&](std::size_t face) {
     const Triangle& t = remeshed.triangles[face];
-    const Vec3 a = remeshed.points[t[0]], b = remeshed.points[t[1]], c = remeshed.points[t[2]];
-    const double mean_edge = ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
-    demands.push_back({(a + b + c) / 3, kCrossingRefinement * mean_edge});
+    SizeDemand finer = face_density_demand(remeshed.points[t[0]], remeshed.points[t[1]], remeshed.points[t[2]]);
+    finer.length *= kCrossingRefinement;
+    demands.push_back(finer);
   };
   for (const auto& [f, g] : crossings.pairs) {
     ask(f);
@@ -148,9 +148,9 @@ bool remesh(TriMesh& mesh, detail::SurfaceConstraints& constraints, const Enhanc
   // The estimate can fall short (a thin part's wedges): splits stopped at the limit leave a
   // half-refined surface, so the field is coarsened and the remeshing run again from the input.
   detail::RemeshCounts counts;
+  int crossing_refinements = 0;
   // The crossings are counted only where they are the reason: on a remeshing stopped half-way,
   // whose splits may have piled thousands of faces on one spot, the count could take minutes.
-  int crossing_refinements = 0;
   const auto taken_back = [&](const std::string& guard, const std::string& reason,
                               std::optional<std::size_t> intersections) {
     result.remesh_crossing_refinements = crossing_refinements;

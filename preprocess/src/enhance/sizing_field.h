@@ -44,10 +44,10 @@ struct SizingRules {
 /// to the surface across: a plate needs edges no longer than it is thick, or its tets are flat)
 /// over thickness_layers, sampled at the centroids of the face's quarters, and theirs, until they
 /// are no longer than it; the user's patch sizes over their patches' faces and the user's regions
-/// (core/size_field.h); and the crossing demands of an earlier remeshing. Each demand holds at its own point and relaxes with distance by the
-/// grading, never under size_min (else the chord tolerance, or the user's smallest patch or
-/// region size if less). Demands sit where they are measured, not at the corners of a needle that
-/// may be far away.
+/// (core/size_field.h); and the crossing demands of an earlier remeshing. Each demand holds at
+/// its own point and relaxes with distance by the grading, never under size_min (else the chord
+/// tolerance, or the user's smallest patch or region size if less). Demands sit where they are
+/// measured, not at the corners of a needle that may be far away.
 class SizingField {
  public:
   /// `mesh` is the input (on its reference).

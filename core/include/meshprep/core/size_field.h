@@ -95,6 +95,11 @@ struct SizeDemand {
   double length = 0;
 };
 
+/// A triangle's own density: the mean of its edges, at its centroid.
+inline SizeDemand face_density_demand(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return {(a + b + c) / 3.0, ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3};
+}
+
 /// A length asked for over a whole region of space (h_s + g * distance to the region outside it).
 struct RegionDemand {
   SizeRegion region;  ///< its size is not read: `length` is the resolved one
