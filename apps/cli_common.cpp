@@ -228,6 +228,7 @@ ImproveParams ImproveFlags::applied_to(ImproveParams params) const {
   if (goal_min_dihedral_deg) params.goal_min_dihedral_deg = *goal_min_dihedral_deg;
   if (goal_max_dihedral_deg) params.goal_max_dihedral_deg = *goal_max_dihedral_deg;
   if (time_limit_seconds) params.time_limit_seconds = *time_limit_seconds;
+  if (boundary_deviation_flag && boundary_deviation_flag->count() > 0) params.boundary_deviation = boundary_deviation;
   return params;
 }
 
@@ -240,6 +241,7 @@ void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off
       ->check(CLI::IsMember({"default", "high", "custom"}));
   add_override(cmd, p.goal_min_dihedral_deg, flags.goal_min_dihedral_deg, defaults.goal_min_dihedral_deg);
   add_override(cmd, p.goal_max_dihedral_deg, flags.goal_max_dihedral_deg, defaults.goal_max_dihedral_deg);
+  flags.boundary_deviation_flag = add_auto_parameter(cmd, p.boundary_deviation, flags.boundary_deviation);
   add_override(cmd, p.time_limit_seconds, flags.time_limit_seconds, defaults.time_limit_seconds);
 }
 

@@ -124,11 +124,14 @@ struct ImproveFlags {
   bool off = false;  ///< --no-improve
   std::optional<std::string> tet_quality;  ///< --tet-quality: the goals' preset, before the goal flags
   std::optional<double> goal_min_dihedral_deg, goal_max_dihedral_deg, time_limit_seconds;
+  /// --boundary-deviation: a number or auto (unset), applied only when the flag was given.
+  std::optional<double> boundary_deviation;
+  const CLI::Option* boundary_deviation_flag = nullptr;
   /// `params` with the flags that were given.
   ImproveParams applied_to(ImproveParams params) const;
 };
 
-/// Registers --goal-min-dihedral, --goal-max-dihedral and --improve-time-limit on `cmd`, and
+/// Registers --goal-min-dihedral, --goal-max-dihedral, --boundary-deviation and --improve-time-limit on `cmd`, and
 /// --no-improve when `can_switch_off`, bound to `flags`; the help gives ImproveParams' defaults.
 void add_improve_options(CLI::App& cmd, ImproveFlags& flags, bool can_switch_off);
 

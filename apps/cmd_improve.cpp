@@ -90,7 +90,8 @@ int run_improve(const ImproveOptions& o) {
 Action add_improve_command(CLI::App& app) {
   auto o = std::make_shared<ImproveOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "improve", "Improve a tet mesh's worst tets (flips, smoothing, new inner vertices); the boundary is kept exactly");
+      "improve", "Improve a tet mesh's worst tets (flips, smoothing, new inner vertices); the boundary is kept exactly "
+                 "unless --boundary-deviation lets its vertices slide on it");
   cmd->add_option("tets", o->input, "Tet mesh: .msh (2.2, 4.1) .vtu .vtk .mesh .node/.ele .xdmf")->required();
   cmd->add_option("-o,--output", o->output, "Improved tet mesh: .msh .vtu .vtk .mesh .node .inp .xdmf (format from the extension)")
       ->required();

@@ -50,11 +50,16 @@ assert j["fem_ready"] == all(c["ok"] for c in checks.values()), j["fem_ready"]
 assert len(j["problems"]) == sum(not c["ok"] for c in checks.values()), j["problems"]
 assert len(q["worst_tets"]) == 10 and len(q["worst_tets"][0]["centre"]) == 3
 assert [s["name"] for s in j["stages"]] == ["check", "patches", "simplify", "smooth", "enhance", "knife_edges", "quality", "tetrahedralize", "improve"]
-# TetGen's tets beside the improved ones; the same boundary, so the same volume.
+# TetGen's tets beside the improved ones. The improved tets' boundary is the final surface (it
+# follows the improvement's boundary slides), so their volumes agree to round-off; TetGen's and
+# theirs differ by at most the surface's area times how far the slides moved it (both surfaces lie
+# within the fidelity bound, 2e-3 of the diagonal, of the input).
 g, i = j["tets"]["tetgen_quality"], j["tets"]["improvement"]
 assert g["min_dihedral_deg"]["min"] < 10 <= q["min_dihedral_deg"]["min"], (g["min_dihedral_deg"], q["min_dihedral_deg"])
 assert i["min_dihedral_after_deg"] == q["min_dihedral_deg"]["min"] and i["min_dihedral_before_deg"] == g["min_dihedral_deg"]["min"]
-assert abs(q["volume"] - g["volume"]) <= 1e-12 * g["volume"], (q["volume"], g["volume"])
+assert abs(q["volume"] - j["quality"]["volume"]) <= 1e-12 * q["volume"], (q["volume"], j["quality"]["volume"])
+moved = 2 * 2e-3 * j["quality"]["bbox_diagonal"] if i["boundary_vertex_moves"] > 0 else 0
+assert abs(q["volume"] - g["volume"]) <= 1e-12 * g["volume"] + j["quality"]["area"] * moved, (q["volume"], g["volume"])
 simplify = next(s for s in j["stages"] if s["name"] == "simplify")
 assert abs(simplify["faces_after"] - 0.3 * 12946) <= 0.01 * 0.3 * 12946, simplify
 assert j["quality"]["closed"] and j["quality"]["self_intersections"] == 0

@@ -14,8 +14,10 @@
 #include "meshprep/core/errors.h"
 #include "meshprep/fem/export.h"
 #include "meshprep/fem/improve_tets.h"
+#include "meshprep/fem/tet_boundary.h"
 #include "meshprep/fem/tet_quality.h"
 #include "meshprep/fem/tetrahedralize.h"
+#include "meshprep/quality/triangle_bvh.h"
 
 #include "scratch_dir.h"
 #include "tet_test_meshes.h"
@@ -629,6 +631,106 @@ TEST(ImproveTets, TheHighPresetEndsNoWorseThanTheDefault) {
   custom.goal_min_dihedral_deg = 18;
   EXPECT_EQ(tet_quality_of(custom), "custom");
   EXPECT_THROW(apply_tet_quality(custom, "best"), InvalidInput);
+}
+
+// cube_tets(n) (one region) with every point moved at random by up to `jitter` cells within its
+// place: inner points anywhere, points on a side within it, points on an edge along it, corners
+// not at all; each move kept only if every tet stays positive. Its boundary is the cube's,
+// exactly, with poor triangles on it.
+TetMesh jittered_cube_and_boundary(int n, double jitter, unsigned seed) {
+  TetMesh m = test::cube_tets(n);
+  std::fill(m.tet_regions.begin(), m.tet_regions.end(), 1);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-jitter / n, jitter / n);
+  for (Vec3& p : m.points) {
+    const Vec3 before = p;
+    for (int d = 0; d < 3; ++d)
+      if (p[d] > 0 && p[d] < 1) p[d] += offset(random);
+    if (!all_positive(m)) p = before;
+  }
+  return m;
+}
+
+
+TEST(BoundarySlides, KeepTheCubesSidesEdgesAndCornersWhileRaisingTheWorstTet) {
+  // At the high preset's goals (20/150 deg) the jittered boundary holds the tets below 20 deg;
+  // sliding on it, they reach the goal.
+  for (const unsigned seed : {9u, 13u}) {
+    TetMesh kept = jittered_cube_and_boundary(4, 0.45, seed), slid = kept;
+    const std::vector<Vec3> first = kept.points;
+    const std::vector<Triangle> first_faces = kept.boundary_faces;
+    const std::vector<int> tags = kept.boundary_tags;
+    ImproveParams params;
+    apply_tet_quality(params, "high");
+    const ImproveResult k = improve_tets(kept, params);
+    EXPECT_EQ(k.boundary_vertex_moves, 0u);  // unset: the boundary is kept exactly
+    EXPECT_LT(k.min_dihedral_after_deg, 20) << seed;
+    params.boundary_deviation = 1e-3;
+    const ImproveResult s = improve_tets(slid, params);
+    EXPECT_GT(s.boundary_vertex_moves, 0u) << seed;
+    EXPECT_GE(s.min_dihedral_after_deg, 20) << seed;
+    EXPECT_TRUE(all_positive(slid)) << seed;
+    EXPECT_NEAR(total_volume(slid), 1.0, 1e-12) << seed;  // the cube, whole
+    // Every boundary face keeps its corners (renumbered with the removed inner points) and its tag;
+    // each corner stays on the cube's sides it was on (a side's point in it, an edge's along it),
+    // and the cube's corners stay where they are.
+    ASSERT_EQ(slid.boundary_faces.size(), first_faces.size());
+    EXPECT_EQ(slid.boundary_tags, tags);
+    for (std::size_t f = 0; f < first_faces.size(); ++f)
+      for (int c = 0; c < 3; ++c) {
+        const Vec3& was = first[first_faces[f][c]];
+        const Vec3& now = slid.points[slid.boundary_faces[f][c]];
+        int sides = 0;
+        for (int d = 0; d < 3; ++d)
+          if (was[d] == 0 || was[d] == 1) {
+            ++sides;
+            EXPECT_NEAR(now[d], was[d], 1e-15) << seed;  // in the side's plane, to rounding
+          }
+        if (sides == 3) {
+          EXPECT_EQ(now, was) << seed;
+        }
+      }
+  }
+}
+
+TEST(BoundarySlides, StayOnTheSurfaceAsItWasAndWithinTheDeviationOfIt) {
+  // TetGen's tets of a sphere whose vertices were moved at random and put back on it: poor faces
+  // and tets. At goals of 28/150 deg the boundary as it is holds some tets back.
+  TriangleSoup sphere = test::icosphere(2);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> offset(-0.04, 0.04);  // edges are about 0.3 long
+  for (Vec3& p : sphere.points) p = (p + Vec3(offset(random), offset(random), offset(random))).normalized();
+  TetParams tet_params;
+  tet_params.keep_surface = true;
+  TetMesh kept = tetrahedralize_plc(plc_from_surface(sphere), tet_params), slid = kept;
+  const TriangleSoup first = boundary_surface(kept);
+  const double diagonal = bounding_box(first).diagonal().norm();
+  ImproveParams params;
+  params.goal_min_dihedral_deg = 28;
+  params.goal_max_dihedral_deg = 150;
+  const ImproveResult k = improve_tets(kept, params);
+  params.boundary_deviation = 2e-3;
+  const ImproveResult s = improve_tets(slid, params);
+  EXPECT_GT(s.boundary_vertex_moves, 0u);
+  EXPECT_GE(s.min_dihedral_after_deg, k.min_dihedral_after_deg);
+  EXPECT_TRUE(all_positive(slid));
+  const TriangleSoup now = boundary_surface(slid);
+  ASSERT_EQ(now.triangles.size(), first.triangles.size());
+  const auto distance = [](const Vec3& x, const TriangleSoup& surface) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const Triangle& t : surface.triangles)
+      d = std::min(d, (closest_point_on_triangle(x, surface.points[t[0]], surface.points[t[1]], surface.points[t[2]]) - x).norm());
+    return d;
+  };
+  // Each vertex slides on the faces it began with: on the first surface, to rounding; and each
+  // vertex's first place stays within the deviation of the faces around it (checked at every slide
+  // of it or of a neighbour), so within it of the final surface.
+  for (const Triangle& t : now.triangles)
+    for (const std::uint32_t v : t) EXPECT_LE(distance(now.points[v], first), 1e-14 * diagonal);
+  for (const Triangle& t : first.triangles)
+    for (const std::uint32_t v : t) EXPECT_LE(distance(first.points[v], now), 2e-3 * diagonal);
+  EXPECT_LE(s.boundary_max_displacement_relative, 1.0);
+  EXPECT_GT(s.boundary_max_displacement_relative, 0.0);
 }
 
 }  // namespace

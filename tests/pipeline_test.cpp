@@ -4,6 +4,7 @@
 
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/fem/tet_boundary.h"
 
 #include "test_meshes.h"
 #include "scratch_dir.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 namespace meshprep {
@@ -424,6 +426,55 @@ TEST_F(Pipeline, TheKnifeEdgesStageOpensACapWithinTheBound) {
   EXPECT_FALSE(kept.knife_edges);
   EXPECT_EQ(kept.final_quality.faces, r.input_quality.faces);
   EXPECT_FALSE(kept.fem.ready);
+}
+
+// The points the triangles of `soup` use, sorted: equal lists mean the same places.
+std::vector<std::array<double, 3>> used_places(const TriangleSoup& soup) {
+  std::vector<std::array<double, 3>> places;
+  std::vector<bool> seen(soup.points.size(), false);
+  for (const Triangle& t : soup.triangles)
+    for (const std::uint32_t v : t)
+      if (!seen[v]) {
+        seen[v] = true;
+        places.push_back({soup.points[v].x(), soup.points[v].y(), soup.points[v].z()});
+      }
+  std::sort(places.begin(), places.end());
+  return places;
+}
+
+TEST_F(Pipeline, BoundarySlidesStayWithinTheFidelityBoundAndTheSurfaceFollowsThem) {
+  // A sphere whose vertices were moved at random by 0.4 of an edge and put back on it, taken as it
+  // is: TetGen's tets keep its poor triangles, which hold tets below the goal unless they slide.
+  TriangleSoup sphere = test::icosphere(3);
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> offset(-0.055, 0.055);  // edges are about 0.14 long
+  for (Vec3& p : sphere.points) p = (p + Vec3(offset(random), offset(random), offset(random))).normalized();
+  const std::string input = mesh_file(sphere, "jittered_sphere.off");
+  PipelineConfig config = small_config();
+  config.simplify.enabled = config.enhance.enabled = false;
+  const double bound = config.enhance.params.max_deviation.value();
+  const PipelineResult r = run_pipeline(input, config);
+  ASSERT_TRUE(r.improvement && r.tets && r.tet_quality && r.final_quality.reference && r.final_quality.volume);
+  EXPECT_GT(r.improvement->boundary_vertex_moves, 0u);
+  EXPECT_TRUE(r.improvement->taken_back.empty());
+  EXPECT_EQ(r.improvement->stopped_by, "goal reached");
+  // The surface stages used none of the bound: the slides may use half of it.
+  EXPECT_LE(r.final_quality.reference->hausdorff_relative, bound);
+  EXPECT_GT(r.final_quality.reference->hausdorff_relative, 0);
+  // The final surface, its figures and surface.ply, is the tets' boundary.
+  EXPECT_EQ(used_places(r.surface), used_places(boundary_surface(*r.tets)));
+  EXPECT_NEAR(r.tet_quality->volume, *r.final_quality.volume, 1e-12 * *r.final_quality.volume);
+
+  // Let slide 25 times the bound's distance, the surface leaves it: the slides are taken back and
+  // the tets improved with the boundary kept.
+  config.improve.params.boundary_deviation = 0.05;
+  const PipelineResult far = run_pipeline(input, config);
+  ASSERT_TRUE(far.improvement && far.final_quality.reference);
+  EXPECT_EQ(far.improvement->boundary_vertex_moves, 0u);
+  ASSERT_FALSE(far.improvement->taken_back.empty());
+  EXPECT_EQ(far.improvement->taken_back.back().guard, "fidelity bound");
+  EXPECT_LE(far.final_quality.reference->hausdorff_relative, 1e-12);  // the input's own triangles
+  EXPECT_EQ(used_places(far.surface), used_places(boundary_surface(*far.tets)));
 }
 
 TEST_F(Pipeline, ObserversSeeEveryStageInOrder) {

@@ -30,6 +30,11 @@ const ImproveParameters& improve_parameters() {
       {"goal_max_dihedral_deg", "--goal-max-dihedral", "... and those with a larger one (degrees)", {60, 180, true, true}},
       {"insertion", "--insertion", "insert inner vertices where flips and smoothing are stuck", {}},
       {"max_passes", "--max-passes", "passes over the tets below the goal, at most", {1, 1000}},
+      {"boundary_deviation", "--boundary-deviation",
+       "how far boundary vertices may move the surface, sliding on it where that raises the worst tet, relative to "
+       "the diagonal (creases and patch borders kept, corners fixed); 0 = the boundary is kept exactly; auto = 0 in "
+       "tetrahedralize and improve, half of what the fidelity bound leaves after the surface stages in the pipeline",
+       {0, 1}},
       {"time_limit_seconds", "--improve-time-limit",
        "stop improving after this many seconds (the best tets so far are kept); -1 = automatic, " +
            parameter_text(kAutomaticTimeLimitFloorSeconds) + " s + " +

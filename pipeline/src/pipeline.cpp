@@ -31,6 +31,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
 
 namespace meshprep {
 namespace {
@@ -589,13 +590,44 @@ class Run {
     params.progress = progress();
     params.cancelled = observer_.cancelled;
     params.deadline = observer_.deadline;
-    const ImproveResult r = improve_tets(*result_.tets, params);
+    // The boundary may slide (improve.boundary_deviation): the final surface follows it, and the
+    // slides are taken back if the surface then leaves the fidelity bound (the deviation is sampled).
+    std::vector<std::uint32_t> surface_in_tets;
+    std::optional<TetMesh> unslid;
+    params.boundary_deviation = 0;
+    if (config_.improve.params.boundary_deviation.value_or(1) > 0) {
+      surface_in_tets = surface_points_in_tets();
+      params.boundary_deviation = boundary_deviation(surface_in_tets);
+      if (*params.boundary_deviation > 0) unslid = *result_.tets;
+    }
+    ImproveResult r = improve_tets(*result_.tets, params);
+    std::optional<SlidSurface> slid;
+    if (r.boundary_vertex_moves > 0) {
+      slid = slid_surface(surface_in_tets);
+      const double bound = fidelity_bound();
+      if (slid->hausdorff_after > bound && slid->hausdorff_before <= bound) {
+        TakenBack taken{"improve", "fidelity bound", "boundary slides", r.boundary_vertex_moves,
+                        "the slides moved the surface past the fidelity bound (" + figure(bound) +
+                            " of the diagonal); the tets are improved again with the boundary kept",
+                        {{"hausdorff_relative", slid->hausdorff_after}, {"min_dihedral_deg", r.min_dihedral_after_deg}},
+                        {}};
+        slid.reset();
+        *result_.tets = std::move(*unslid);
+        params.boundary_deviation = 0;
+        r = improve_tets(*result_.tets, params);
+        taken.after = {{"hausdorff_relative", result_.final_quality.reference->hausdorff_relative},
+                       {"min_dihedral_deg", r.min_dihedral_after_deg}};
+        r.taken_back.push_back(std::move(taken));
+      }
+    }
     record.seconds = r.seconds;
     record.details = to_json(r);
+    record.details["boundary_deviation"] = *params.boundary_deviation;
     if (r.passes > 0) {
       result_.tetgen_quality = std::move(result_.tet_quality);
       result_.tet_quality = analyze_tet_quality(*result_.tets);
     }
+
     record.note = "smallest dihedral " + figure(r.min_dihedral_before_deg) + " -> " + figure(r.min_dihedral_after_deg) +
                   " deg, largest " + figure(r.max_dihedral_before_deg) + " -> " + figure(r.max_dihedral_after_deg) +
                   " deg (" + r.stopped_by + ")";
@@ -604,9 +636,77 @@ class Run {
                      " flat tet(s) on the boundary removed (its triangles flipped in their plane)";
     const std::string limit = surface_limit_note(r, params.goal_min_dihedral_deg);
     if (!limit.empty()) record.note += "; " + limit;
+    if (slid) {
+      record.details["surface_hausdorff_relative_before"] = slid->hausdorff_before;
+      record.details["surface_hausdorff_relative_after"] = slid->hausdorff_after;
+      record.note += "; " + std::to_string(r.boundary_vertex_moves) + " boundary vertex slide(s), the farthest " +
+                     figure(r.boundary_max_displacement_relative) + " of the diagonal; the surface's distance from the input " +
+                     figure(slid->hausdorff_before) + " -> " + figure(slid->hausdorff_after) + " of the diagonal";
+      result_.surface = std::move(slid->surface);
+      result_.final_quality = std::move(slid->quality);
+    }
     record.taken_back = r.taken_back;
     result_.improvement = r;
     finish(std::move(record));
+  }
+
+  // For each point of the final surface, the tet point at the same place (kNotInTets if none).
+  static constexpr std::uint32_t kNotInTets = ~std::uint32_t(0);
+  std::vector<std::uint32_t> surface_points_in_tets() const {
+    struct PlaceHash {
+      std::size_t operator()(const std::array<double, 3>& p) const {
+        std::size_t h = 0;
+        for (const double x : p) h = h * 0x9E3779B97F4A7C15ull ^ std::hash<double>()(x);
+        return h;
+      }
+    };
+    std::unordered_map<std::array<double, 3>, std::uint32_t, PlaceHash> at;
+    at.reserve(result_.tets->points.size());
+    for (std::size_t i = 0; i < result_.tets->points.size(); ++i) {
+      const Vec3& p = result_.tets->points[i];
+      at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(i));
+    }
+    std::vector<std::uint32_t> in_tets(result_.surface.points.size(), kNotInTets);
+    for (std::size_t i = 0; i < in_tets.size(); ++i) {
+      const Vec3& p = result_.surface.points[i];
+      const auto found = at.find({p.x(), p.y(), p.z()});
+      if (found != at.end()) in_tets[i] = found->second;
+    }
+    return in_tets;
+  }
+
+  // How far the improvement may slide the boundary, relative to the tets' diagonal: the set value,
+  // or (auto) a share of what the fidelity bound leaves after the surface stages. None when a point
+  // of the final surface is not among the tets' (it could not follow).
+  double boundary_deviation(const std::vector<std::uint32_t>& surface_in_tets) const {
+    if (config_.improve.params.boundary_deviation) return *config_.improve.params.boundary_deviation;
+    for (const Triangle& t : result_.surface.triangles)
+      for (const std::uint32_t i : t)
+        if (surface_in_tets[i] == kNotInTets) return 0;
+    Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for (const Vec3& p : result_.tets->points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+    const double tets_diagonal = result_.tets->points.empty() ? 0.0 : (high - low).norm();
+    if (!result_.final_quality.reference) return 0;
+    const double used = result_.final_quality.reference->hausdorff_relative;
+    const double left = std::max(0.0, fidelity_bound() - used) * result_.input_quality.bbox_diagonal;
+    return tets_diagonal > 0 ? kBoundaryShareOfFidelityLeft * left / tets_diagonal : 0;
+  }
+
+  // The final surface with the places the improvement slid its vertices to, measured again (its
+  // distance from the input, its faces), so that the report describes the tets' boundary.
+  struct SlidSurface {
+    TriangleSoup surface;
+    QualityReport quality;
+    double hausdorff_before = 0, hausdorff_after = 0;  ///< from the input, relative to its diagonal
+  };
+  SlidSurface slid_surface(const std::vector<std::uint32_t>& surface_in_tets) const {
+    SlidSurface slid{result_.surface, {}, 0, 0};
+    for (std::size_t i = 0; i < surface_in_tets.size(); ++i)
+      if (surface_in_tets[i] != kNotInTets) slid.surface.points[i] = result_.tets->points[surface_in_tets[i]];
+    slid.quality = analyze_quality(slid.surface, config_.quality.params, &result_.input_surface);
+    slid.hausdorff_before = result_.final_quality.reference->hausdorff_relative;
+    slid.hausdorff_after = slid.quality.reference->hausdorff_relative;
+    return slid;
   }
 
   // tetrahedralize.order 2: the final tets made second-order, the boundary's nodes onto the input
@@ -660,6 +760,10 @@ class Run {
           "; a finer grid (repair.envelope_cells) comes closer, or allow more with enhance.max_deviation");
     result_.fem.ready = result_.tets.has_value() && result_.fem.problems.empty();
   }
+
+  // The share of what the fidelity bound leaves that the improvement's boundary slides may take:
+  // their deviation is sampled (boundary_slides.h), the final surface measured again after them.
+  static constexpr double kBoundaryShareOfFidelityLeft = 0.5;
 
   // How far the surface may move from the input, as a fraction of its diagonal: the enhancement's
   // bound, which the knife-edge stage and the repair's envelope route answer to as well.

@@ -442,7 +442,8 @@ std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
   const ImproveParameters& info = improve_parameters();
   std::vector<Key> keys;
   keys.push_back(flag("improve", "enabled", i.enabled,
-                      "improve TetGen's tets (flips, smoothing, new inner vertices; the boundary is kept exactly)"));
+                      "improve TetGen's tets (flips, smoothing, new inner vertices; boundary vertices slide on the surface within "
+                      "improve.boundary_deviation)"));
   // The preset before the goals: a file read back sets the preset's goals, then the goals as written.
   keys.push_back({"improve", info.tet_quality.key, "one of default, high, custom", info.tet_quality.help,
                   [&p](const Json& v) {
@@ -458,6 +459,7 @@ std::vector<Key> improve_keys(PipelineConfig::Improve& i) {
   keys.push_back(number("improve", info.goal_max_dihedral_deg, p.goal_max_dihedral_deg));
   keys.push_back(flag("improve", info.insertion, p.insertion));
   keys.push_back(count("improve", info.max_passes, p.max_passes));
+  keys.push_back(number_or_auto("improve", info.boundary_deviation, p.boundary_deviation));
   keys.push_back(number("improve", info.time_limit_seconds, p.time_limit_seconds));
   return keys;
 }

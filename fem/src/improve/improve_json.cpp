@@ -41,6 +41,8 @@ nlohmann::ordered_json to_json(const ImproveResult& r) {
           {"compound_moves", r.compound_moves},
           {"contractions", r.contractions},
           {"inserted_vertices", r.inserted_vertices},
+          {"boundary_vertex_moves", r.boundary_vertex_moves},
+          {"boundary_max_displacement_relative", r.boundary_max_displacement_relative},
           {"flat_boundary_tets_removed", r.flat_boundary_tets_removed},
           {"passes", r.passes},
           {"stopped_by", r.stopped_by},

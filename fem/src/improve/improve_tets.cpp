@@ -3,6 +3,7 @@
 // vertex; passes until the goal is reached or a pass gains nothing.
 #include "meshprep/fem/improve_tets.h"
 
+#include "boundary_slides.h"
 #include "compound_move.h"
 #include "edge_contraction.h"
 #include "flat_boundary_tets.h"
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
 #include <cmath>
 #include <queue>
@@ -87,9 +89,10 @@ class Schedule {
  public:
   // The run ends by `end` (none: no time limit); `began` is when the improvement began, for the
   // progress the clock gives.
-  Schedule(TetComplex& mesh, const ImproveParams& params, ImproveResult& result, Clock::time_point began,
-           std::optional<Clock::time_point> end)
+  Schedule(TetComplex& mesh, const BoundarySlides* slides, const ImproveParams& params, ImproveResult& result,
+           Clock::time_point began, std::optional<Clock::time_point> end)
       : mesh_(mesh),
+        slides_(slides),
         params_(params),
         result_(result),
         goal_(std::sin(params.goal_min_dihedral_deg * kRadiansPerDegree)),
@@ -294,8 +297,13 @@ class Schedule {
     bool moved = false;
     const Tetrahedron tet = mesh_.tet(t);
     for (const VertexId v : tet) {
-      if (!mesh_.free_vertex(v) || !smooth_vertex(mesh_, v)) continue;
-      ++result_.vertex_moves;
+      if (mesh_.free_vertex(v)) {
+        if (!smooth_vertex(mesh_, v)) continue;
+        ++result_.vertex_moves;
+      } else {
+        if (!slides_ || !slides_->may_slide(v) || !slides_->slide(mesh_, v)) continue;
+        ++result_.boundary_vertex_moves;
+      }
       moved = true;
       changed_star(v);
     }
@@ -370,6 +378,7 @@ class Schedule {
   };
 
   TetComplex& mesh_;
+  const BoundarySlides* slides_;  // null: the boundary is kept exactly
   const ImproveParams& params_;
   ImproveResult& result_;
   const double goal_;  // the objective's value at the goal angles
@@ -396,6 +405,7 @@ void check_improve_params(const ImproveParams& p) {
   check_parameter("improve", info.goal_min_dihedral_deg, p.goal_min_dihedral_deg);
   check_parameter("improve", info.goal_max_dihedral_deg, p.goal_max_dihedral_deg);
   check_parameter("improve", info.max_passes, static_cast<double>(p.max_passes));
+  if (p.boundary_deviation) check_parameter("improve", info.boundary_deviation, *p.boundary_deviation);
   if (!(p.time_limit_seconds == kAutomaticTimeLimit || (p.time_limit_seconds >= 0 && std::isfinite(p.time_limit_seconds))))
     throw InvalidInput("improve: time_limit_seconds must be -1 (automatic), 0 (none) or a positive number of seconds, not " +
                        parameter_text(p.time_limit_seconds));
@@ -440,6 +450,24 @@ constexpr double kClimbFloorSeconds = 1;
 // The improvement's own time limit on `tets` tets: the one set, or the automatic one (0: none).
 double own_time_limit(const ImproveParams& params, std::size_t tets) {
   return params.time_limit_seconds == kAutomaticTimeLimit ? automatic_improve_time_limit(tets) : params.time_limit_seconds;
+}
+
+// The boundary edges that cap the tets below the goal (surface_limits.h), into `result`; `shift`
+// takes the complex's points back to the mesh's.
+void list_limiting_edges(const TetComplex& complex, double goal_min_dihedral_deg, const Vec3& shift, ImproveResult& result) {
+  std::vector<LimitingBoundaryEdge> limiting = limiting_boundary_edges(complex, goal_min_dihedral_deg);
+  for (LimitingBoundaryEdge& e : limiting) e.midpoint += shift;
+  result.limiting_edge_count = limiting.size();
+  result.surface_bound_deg = limiting.empty() ? goal_min_dihedral_deg : limiting.front().bound_deg;
+  if (limiting.size() > kListedLimitingEdges) limiting.resize(kListedLimitingEdges);
+  result.limiting_edges = std::move(limiting);
+}
+
+// The diagonal of the box around the complex's points.
+double bounding_diagonal(const TetComplex& complex) {
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (VertexId v = 0; v < complex.points(); ++v) low = low.cwiseMin(complex.point(v)), high = high.cwiseMax(complex.point(v));
+  return complex.points() > 0 ? (high - low).norm() : 0.0;
 }
 
 // One run of the schedule at params' goals.
@@ -492,21 +520,28 @@ ImproveResult improve_at_goal(TetMesh& mesh, const ImproveParams& params) {
   poll();
   TetComplex complex(shift.isZero() ? input : moved, obtuse_weight, params.cancelled);
   poll();
-  std::vector<LimitingBoundaryEdge> limiting = limiting_boundary_edges(complex, params.goal_min_dihedral_deg);
+  list_limiting_edges(complex, params.goal_min_dihedral_deg, shift, result);
   poll();
-  for (LimitingBoundaryEdge& e : limiting) e.midpoint += shift;
-  result.limiting_edge_count = limiting.size();
-  result.surface_bound_deg = limiting.empty() ? params.goal_min_dihedral_deg : limiting.front().bound_deg;
-  if (limiting.size() > kListedLimitingEdges) limiting.resize(kListedLimitingEdges);
-  result.limiting_edges = std::move(limiting);
 
   // The time limit counts from the start above (the setup too), shortened to the command's deadline.
   const double limit = params.deadline.limit(own_time_limit(params, mesh.tets.size()));
   std::optional<Clock::time_point> end;
   if (limit > 0) end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
-  Schedule schedule(complex, params, result, start, end);
+  const double diagonal = bounding_diagonal(complex);
+  std::optional<BoundarySlides> slides;
+  if (params.boundary_deviation.value_or(0) > 0)
+    slides.emplace(complex, shift.isZero() ? input : moved, *params.boundary_deviation * diagonal);
+  Schedule schedule(complex, slides ? &*slides : nullptr, params, result, start, end);
   schedule.run();
   result.below_goal_after = schedule.below_goal();
+  if (result.boundary_vertex_moves > 0) {
+    // The boundary moved: what it allows now.
+    double farthest = 0;
+    for (VertexId v = 0; v < complex.points(); ++v)
+      if (slides->may_slide(v)) farthest = std::max(farthest, slides->displacement(complex, v));
+    result.boundary_max_displacement_relative = farthest / diagonal;
+    list_limiting_edges(complex, params.goal_min_dihedral_deg, shift, result);
+  }
   if (result.passes > 0) {
     mesh = complex.to_mesh(input);
     for (Vec3& p : mesh.points) p += shift;
@@ -546,6 +581,7 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   // TetGen's tets ended worse than the default's on 9 of the 56 shared meshes, cow 11.9 -> 7.6
   // deg: bench/RESULTS.md "Tets at goal 20/150 today"). Each stage has its own time limit.
   ImproveParams first = params;
+  if (params.boundary_deviation) first.boundary_deviation = 0.5 * *params.boundary_deviation;
   first.goal_min_dihedral_deg = floor_goals.goal_min_dihedral_deg;
   first.goal_max_dihedral_deg = floor_goals.goal_max_dihedral_deg;
   if (params.progress) first.progress = [&params](double f) { params.progress(0.5 * f); };
@@ -554,6 +590,7 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   ImproveResult floor = improve_at_goal(floor_mesh, first);
   TetMesh climbed = floor_mesh;
   ImproveParams second = params;
+  second.boundary_deviation = first.boundary_deviation;
   // The climb's budget: at most twice the first stage's time (at least kClimbFloorSeconds), within
   // its own limit (none when the user asked for none): the quality mode then costs at most about
   // three default runs of the improvement.
@@ -572,6 +609,8 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
   result.compound_moves += floor.compound_moves;
   result.contractions += floor.contractions;
   result.inserted_vertices += floor.inserted_vertices;
+  result.boundary_vertex_moves += floor.boundary_vertex_moves;
+  result.boundary_max_displacement_relative += floor.boundary_max_displacement_relative;
   result.flat_boundary_tets_removed += floor.flat_boundary_tets_removed;
   result.passes += floor.passes;
   result.seconds += floor.seconds;
@@ -593,6 +632,7 @@ ImproveResult improve_tets(TetMesh& mesh, const ImproveParams& params) {
        {{"min_dihedral_deg", floor.min_dihedral_after_deg}, {"max_dihedral_deg", floor.max_dihedral_after_deg}}});
   result.min_dihedral_after_deg = floor.min_dihedral_after_deg;
   result.max_dihedral_after_deg = floor.max_dihedral_after_deg;
+  result.boundary_max_displacement_relative = floor.boundary_max_displacement_relative;
   result.tets_after = floor.tets_after;
   result.below_goal_after = high.below_goal_before;  // the first stage's tets, below the goal asked
   return result;

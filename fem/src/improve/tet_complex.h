@@ -74,8 +74,9 @@ class TetComplex {
   VertexId add_point(const Vec3& p);
   /// Takes back the point add_point just made. \pre v is the last point and no tet uses it.
   void discard_point(VertexId v);
-  /// Moves free vertex v to p and updates the qualities of its tets (`star`, from star()).
-  /// \pre the caller checked that every tet of the star stays positive at p.
+  /// Moves vertex v to p and updates the qualities of its tets (`star`, from star()).
+  /// \pre the caller checked that every tet of the star stays positive at p; a vertex on a
+  /// constrained face moves only where the caller keeps the boundary's shape (boundary_slides.h).
   void move_point(VertexId v, const Vec3& p, const std::vector<TetId>& star);
 
   /// The mesh with the edits: the original points (unmoved ones bit for bit) then the added

@@ -1,7 +1,6 @@
 #include "vertex_smoothing.h"
 
 #include "tet_objective.h"
-#include "worst_tet_maximiser.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +8,6 @@
 
 namespace meshprep::improve {
 namespace {
-
-// A step never goes further than this share of the shortest edge at the vertex.
-constexpr double kMaxStepOfShortestEdge = 0.5;
 
 // The tet t with corner `slot` free, as (fixed..., free) of the same orientation: each order
 // below is an even permutation of t's corners.
@@ -24,9 +20,13 @@ OneFreeCornerTet with_free_corner_last(const Tetrahedron& t, int slot, const Tet
   }
 }
 
+// A step never goes further than this share of the shortest edge at the vertex.
+constexpr double kMaxStepOfShortestEdge = 0.5;
+
 }  // namespace
 
-bool smooth_vertex(TetComplex& mesh, VertexId v) {
+bool smooth_vertex(TetComplex& mesh, VertexId v, const SlideConstraint* constraint,
+                   const std::function<bool(const Vec3&)>& acceptable, int halvings) {
   thread_local std::vector<TetId> star;
   thread_local std::vector<OneFreeCornerTet> tets;
   mesh.star(v, star);
@@ -43,8 +43,16 @@ bool smooth_vertex(TetComplex& mesh, VertexId v) {
   }
   const double weight = mesh.obtuse_weight();
   const double initial = worst_quality(tets, start, weight);
-  const MaximisedPosition best = maximise_worst_tet(tets, start, kMaxStepOfShortestEdge * std::sqrt(shortest), weight);
-  if (!(best.worst > initial + kMinSineGain) || !all_positive(tets, best.position)) return false;
+  MaximisedPosition best =
+      maximise_worst_tet(tets, start, kMaxStepOfShortestEdge * std::sqrt(shortest), weight, constraint);
+  for (int halving = 0;; ++halving) {
+    if (!(best.worst > initial + kMinSineGain)) return false;
+    if (all_positive(tets, best.position) && (!acceptable || acceptable(best.position))) break;
+    if (halving == halvings) return false;
+    Vec3 halfway = start + 0.5 * (best.position - start);
+    if (constraint) halfway = constraint->position(halfway);
+    best = {halfway, worst_quality(tets, halfway, weight)};
+  }
   mesh.move_point(v, best.position, star);
   return true;
 }

@@ -73,7 +73,7 @@ double worst_quality(const std::vector<OneFreeCornerTet>& tets, const Vec3& x, d
 }
 
 MaximisedPosition maximise_worst_tet(const std::vector<OneFreeCornerTet>& tets, const Vec3& start, double max_step,
-                                     double obtuse_weight) {
+                                     double obtuse_weight, const SlideConstraint* constraint) {
   MaximisedPosition at{start, worst_quality(tets, start, obtuse_weight)};
   std::vector<double> values(tets.size());
   std::vector<Vec3> gradients(tets.size());
@@ -84,7 +84,7 @@ MaximisedPosition maximise_worst_tet(const std::vector<OneFreeCornerTet>& tets, 
       const ObjectiveWithGradient q =
           biased_min_sine_gradient(tets[i].fixed[0], tets[i].fixed[1], tets[i].fixed[2], at.position, obtuse_weight);
       values[i] = q.value;
-      gradients[i] = q.gradient;
+      gradients[i] = constraint ? constraint->direction(q.gradient) : q.gradient;
     }
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     const std::size_t n_active = std::min(kMaxActive, order.size());
@@ -105,7 +105,7 @@ MaximisedPosition maximise_worst_tet(const std::vector<OneFreeCornerTet>& tets, 
     }
     bool gained = false;
     for (int halving = 0; halving < kMaxHalvings && !gained; ++halving, step *= 0.5) {
-      const Vec3 candidate = at.position + step * d;
+      const Vec3 candidate = constraint ? constraint->position(at.position + step * d) : Vec3(at.position + step * d);
       const double value = worst_quality(tets, candidate, obtuse_weight);
       if (value > at.worst) at = {candidate, value}, gained = true;
     }

@@ -9,6 +9,7 @@
 
 #include "meshprep/core/mesh.h"
 
+#include <functional>
 #include <vector>
 
 namespace meshprep::improve {
@@ -27,10 +28,19 @@ struct MaximisedPosition {
   double worst;  ///< the objective's worst over the tets there
 };
 
+/// Where the free corner may go when it is not free in space (a boundary vertex sliding on its
+/// surface): `direction` keeps the part of a gradient along which it may move (the tangent plane,
+/// the crease's line), `position` puts a point back where it may be (onto the surface).
+struct SlideConstraint {
+  std::function<Vec3(const Vec3&)> direction;
+  std::function<Vec3(const Vec3&)> position;
+};
+
 /// Starts at `start` and climbs; `max_step` bounds each step's length (a fraction of the local
-/// edge lengths keeps the linearisation honest). The result is never worse than the start.
+/// edge lengths keeps the linearisation honest). The result is never worse than the start. With
+/// `constraint`, the gradients are those of the constrained corner and every step ends on it.
 MaximisedPosition maximise_worst_tet(const std::vector<OneFreeCornerTet>& tets, const Vec3& start, double max_step,
-                                     double obtuse_weight);
+                                     double obtuse_weight, const SlideConstraint* constraint = nullptr);
 
 /// True if every tet is positive at x by the exact orientation test.
 bool all_positive(const std::vector<OneFreeCornerTet>& tets, const Vec3& x);

@@ -14,7 +14,8 @@ struct TetParameters {
 const TetParameters& tet_parameters();
 
 struct ImproveParameters {
-  ParameterInfo tet_quality, goal_min_dihedral_deg, goal_max_dihedral_deg, insertion, max_passes, time_limit_seconds;
+  ParameterInfo tet_quality, goal_min_dihedral_deg, goal_max_dihedral_deg, insertion, max_passes, boundary_deviation,
+      time_limit_seconds;
 };
 const ImproveParameters& improve_parameters();
 

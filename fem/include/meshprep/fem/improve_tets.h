@@ -24,7 +24,9 @@
 /// weighted so that goal_max_dihedral_deg scores like goal_min_dihedral_deg.
 ///
 /// Kept exactly: every constrained face (the boundary: faces with one tet; faces between two
-/// regions; any face listed in boundary_faces) with its corners, which never move; the regions
+/// regions; any face listed in boundary_faces) with its corners, which never move unless
+/// boundary_deviation allows the outer boundary's corners to slide on the surface (then each
+/// boundary face keeps its corners, its tag and its side, within that distance); the regions
 /// (no move mixes two); the boundary tags. What the surface forbids (fem/src/improve/
 /// surface_limits.h): at a boundary edge whose interior angle alpha is below the goal, every tet
 /// there has a dihedral angle <= alpha; below twice the goal, either one tet spans the edge, the
@@ -38,6 +40,7 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +66,12 @@ struct ImproveParams {
   bool smoothing = true;          ///< moving free vertices
   bool insertion = true;          ///< new interior vertices
   std::size_t max_passes = 10;    ///< >= 1
+  /// How far the boundary may move, as a fraction of the mesh's bounding-box diagonal: boundary
+  /// vertices slide on the surface (within their first faces, along creases, corners fixed) where
+  /// that raises the worst tet, the faces staying within this distance of the boundary as it was
+  /// (fem/src/improve/boundary_slides.h). 0 or unset (the default): the boundary is kept exactly.
+  /// With a goal past the default, each of the two stages may use half. In [0, 1].
+  std::optional<double> boundary_deviation;
   /// kAutomaticTimeLimit (the default): automatic_improve_time_limit; 0: none; the run stops after
   /// the move under way, with the best tets so far.
   double time_limit_seconds = kAutomaticTimeLimit;
@@ -107,6 +116,9 @@ struct ImproveResult {
   std::size_t compound_moves = 0;       ///< removals kept only with the smoothing after them
   std::size_t contractions = 0;         ///< free vertices merged into a neighbour
   std::size_t inserted_vertices = 0;
+  std::size_t boundary_vertex_moves = 0;  ///< slides of boundary vertices on the surface
+  /// The farthest a boundary vertex ended from where it began, as a fraction of the diagonal.
+  double boundary_max_displacement_relative = 0;
   /// Tets flat to rounding with two faces on the boundary, removed first (a 2-2 flip of the
   /// boundary in its plane: fem/src/improve/flat_boundary_tets.h).
   std::size_t flat_boundary_tets_removed = 0;
