@@ -696,13 +696,7 @@ TEST(BoundarySlides, KeepTheCubesSidesEdgesAndCornersWhileRaisingTheWorstTet) {
 TEST(BoundarySlides, StayOnTheSurfaceAsItWasAndWithinTheDeviationOfIt) {
   // TetGen's tets of a sphere whose vertices were moved at random and put back on it: poor faces
   // and tets. At goals of 28/150 deg the boundary as it is holds some tets back.
-  TriangleSoup sphere = test::icosphere(2);
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> offset(-0.04, 0.04);  // edges are about 0.3 long
-  for (Vec3& p : sphere.points) {  // drawn in sequence: the same sphere whatever the compiler
-    const double z = offset(random), y = offset(random), x = offset(random);
-    p = (p + Vec3(x, y, z)).normalized();
-  }
+  const TriangleSoup sphere = test::jittered_icosphere(2, 0.04, 3);  // edges are about 0.3 long
   TetParams tet_params;
   tet_params.keep_surface = true;
   TetMesh kept = tetrahedralize_plc(plc_from_surface(sphere), tet_params), slid = kept;

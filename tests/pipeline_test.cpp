@@ -21,7 +21,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 
 namespace meshprep {
@@ -445,13 +444,7 @@ std::vector<std::array<double, 3>> used_places(const TriangleSoup& soup) {
 TEST_F(Pipeline, BoundarySlidesStayWithinTheFidelityBoundAndTheSurfaceFollowsThem) {
   // A sphere whose vertices were moved at random by 0.4 of an edge and put back on it, taken as it
   // is: TetGen's tets keep its poor triangles, which hold tets below the goal unless they slide.
-  TriangleSoup sphere = test::icosphere(3);
-  std::mt19937 random(1);
-  std::uniform_real_distribution<double> offset(-0.055, 0.055);  // edges are about 0.14 long
-  for (Vec3& p : sphere.points) {  // drawn in sequence: the same sphere whatever the compiler
-    const double z = offset(random), y = offset(random), x = offset(random);
-    p = (p + Vec3(x, y, z)).normalized();
-  }
+  const TriangleSoup sphere = test::jittered_icosphere(3, 0.055, 1);  // edges are about 0.14 long
   const std::string input = mesh_file(sphere, "jittered_sphere.off");
   PipelineConfig config = small_config();
   config.simplify.enabled = config.enhance.enabled = false;

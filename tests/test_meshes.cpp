@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -30,6 +31,17 @@ TriangleSoup box(const Vec3& lo, const Vec3& hi) {
   TriangleSoup b = cube();
   for (Vec3& p : b.points) p = lo + p.cwiseProduct(hi - lo);
   return b;
+}
+
+TriangleSoup jittered_icosphere(int levels, double amplitude, unsigned seed) {
+  TriangleSoup sphere = icosphere(levels);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-amplitude, amplitude);
+  for (Vec3& p : sphere.points) {
+    const double z = offset(random), y = offset(random), x = offset(random);
+    p = (p + Vec3(x, y, z)).normalized();
+  }
+  return sphere;
 }
 
 TriangleSoup icosphere(int levels, double r) {

@@ -17,6 +17,11 @@ TriangleSoup box(const Vec3& lo, const Vec3& hi);
 /// Icosahedron subdivided `levels` times (1-to-4) and projected on the sphere of radius r.
 TriangleSoup icosphere(int levels, double r = 1.0);
 
+/// icosphere(levels) with every vertex moved by up to `amplitude` along each axis (uniform,
+/// std::mt19937(seed), drawn in sequence: the same sphere whatever the compiler) and put back on
+/// the unit sphere: poor triangles on an exact sphere.
+TriangleSoup jittered_icosphere(int levels, double amplitude, unsigned seed);
+
 /// Torus with major radius R, minor radius r, n x m quads split into triangles (genus 1).
 TriangleSoup torus(int n, int m, double R = 2.0, double r = 0.5);
 
