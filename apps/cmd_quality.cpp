@@ -30,9 +30,12 @@ struct QualityOptions {
 
 // Faces a halfedge mesh cannot hold (non-manifold, oriented against a neighbour, repeated):
 // the processing stages would refuse the surface, so the user hears about it here, with the indices.
-nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport& read) {
+// OpenMesh refuses a face only at a complex edge or vertex (or a patch it cannot relink there),
+// which a manifold, oriented soup without duplicate faces does not have, in any face order: such
+// a surface is not built again to be told so (at 1.2 M faces, 14 % of the command's time).
+nlohmann::ordered_json describe_input(const TriangleSoup& soup, const ReadReport& read, const QualityReport& report) {
   MeshBuildReport build;
-  mesh_from_soup(soup, &build);
+  if (!(report.manifold && report.oriented && report.duplicate_faces == 0)) mesh_from_soup(soup, &build);
   nlohmann::ordered_json j;
   j["format"] = read.format;
   j["faces_in_file"] = read.faces_in_file;
@@ -104,7 +107,7 @@ int run_quality(const QualityOptions& o) {
   if (report.reference) report.reference->path = o.reference;
 
   nlohmann::ordered_json json = to_json(report);
-  json["input"] = describe_input(soup, read);
+  json["input"] = describe_input(soup, read, report);
   if (!o.csv.empty()) write_csv(o.csv, soup, report);
   if (!o.vtk.empty()) write_vtk(o.vtk, soup, report);
   if (!o.html.empty()) write_html(o.html, soup, report);

@@ -2,7 +2,9 @@
 #include "meshprep/core/atomic_file.h"
 #include "meshprep/core/errors.h"
 #include "meshprep/core/io.h"
+#include "meshprep/quality/topology.h"
 #include "scratch_dir.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <future>
 #include <sstream>
 #include <stdexcept>
@@ -563,6 +566,24 @@ TEST_F(IoTest, RepeatedIndexFaceIsDropped) {
   const TriMesh mesh = mesh_from_soup(soup, &report);
   EXPECT_EQ(report.dropped_faces, (std::vector<std::size_t>{4}));
   EXPECT_EQ(mesh.n_faces(), 4u);
+}
+
+// `meshprep quality` builds the halfedge mesh to list the faces it would drop only when the soup
+// is not manifold, oriented and free of duplicates: OpenMesh must then keep every face, whatever
+// the order they come in (closed, with a handle, with a border).
+TEST_F(IoTest, AManifoldOrientedSoupBuildsWholeInAnyFaceOrder) {
+  std::mt19937 rng(7);
+  for (TriangleSoup soup : {test::icosphere(2), test::torus(12, 8), test::grid(10)}) {
+    for (int order = 0; order < 20; ++order) {
+      std::shuffle(soup.triangles.begin(), soup.triangles.end(), rng);
+      const Topology topology = analyze_topology(soup);
+      ASSERT_TRUE(topology.manifold && topology.oriented && topology.duplicate_faces == 0);
+      MeshBuildReport report;
+      const TriMesh mesh = mesh_from_soup(soup, &report);
+      EXPECT_TRUE(report.dropped_faces.empty()) << order;
+      EXPECT_EQ(mesh.n_faces(), soup.triangles.size());
+    }
+  }
 }
 
 TEST_F(IoTest, DroppedFacesAreExplained) {

@@ -5,6 +5,8 @@
 #include "meshprep/quality/topology.h"
 #include "meshprep/quality/triangle_bvh.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <chrono>
 #include <numeric>
@@ -96,7 +98,12 @@ ReferenceComparison compare_with(const SoupView& soup, const QualityReport& r, c
   DistanceParams dp;
   dp.samples = params.distance_samples;
   dp.seed = params.seed;
-  const SurfaceDistance d = surface_distance(soup, reference, dp);
+  SurfaceDistance d;
+  QualityReport ref;  // the reference's topology, for its volume
+  tbb::parallel_invoke([&] { d = surface_distance(soup, reference, dp); },
+                       [&] {
+                         if (r.volume) fill_topology(reference, ref);
+                       });
   ReferenceComparison c;
   c.reference_bbox_diagonal = bbox_diagonal(reference);
   const double diag = c.reference_bbox_diagonal > 0 ? c.reference_bbox_diagonal : 1.0;
@@ -105,11 +112,7 @@ ReferenceComparison compare_with(const SoupView& soup, const QualityReport& r, c
   c.rms_relative = d.rms() / diag;
   c.mean_relative = d.mean() / diag;
   c.samples = d.a_to_b.points;
-  if (r.volume) {
-    QualityReport ref;
-    fill_topology(reference, ref);
-    if (ref.volume && *ref.volume != 0) c.volume_change_percent = (*r.volume - *ref.volume) / *ref.volume * 100.0;
-  }
+  if (r.volume && ref.volume && *ref.volume != 0) c.volume_change_percent = (*r.volume - *ref.volume) / *ref.volume * 100.0;
   return c;
 }
 
@@ -118,16 +121,21 @@ ReferenceComparison compare_with(const SoupView& soup, const QualityReport& r, c
 QualityReport analyze_quality(const SoupView& soup, const QualityParams& params, const TriangleSoup* reference) {
   const auto start = std::chrono::steady_clock::now();
   QualityReport r;
-  fill_topology(soup, r);
-  fill_shape(soup, params.worst_faces, r);
-  fill_bbox(soup, r);
-  if (params.self_intersection_cap > 0) {
-    SelfIntersections si = find_self_intersections(soup, params.self_intersection_cap);
-    r.self_intersections = si.count;
-    r.self_intersections_capped = si.capped;
-    si.pairs.resize(std::min(si.pairs.size(), kListedPairs));
-    r.self_intersecting_pairs = std::move(si.pairs);
-  }
+  // Three independent parts, each filling its own fields of r: the topology (serial: union-finds
+  // over the sorted edges) runs beside the other two, so that a second core has work throughout.
+  tbb::parallel_invoke([&] { fill_topology(soup, r); },
+                       [&] {
+                         fill_shape(soup, params.worst_faces, r);
+                         fill_bbox(soup, r);
+                       },
+                       [&] {
+                         if (params.self_intersection_cap == 0) return;
+                         SelfIntersections si = find_self_intersections(soup, params.self_intersection_cap);
+                         r.self_intersections = si.count;
+                         r.self_intersections_capped = si.capped;
+                         si.pairs.resize(std::min(si.pairs.size(), kListedPairs));
+                         r.self_intersecting_pairs = std::move(si.pairs);
+                       });
   if (reference) r.reference = compare_with(soup, r, *reference, params);
   r.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

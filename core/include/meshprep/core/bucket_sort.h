@@ -2,8 +2,8 @@
 /// \file bucket_sort.h
 /// Sorting items that are ordered first by a vertex index: a counting sort into one run per
 /// index, then each run sorted alone. Each run holds about a vertex's degree of items, so this
-/// costs a fraction of one comparison sort of all of them (the face edges of topology and repair,
-/// the faces of the weld's duplicate search).
+/// costs a fraction of one comparison sort of all of them (the faces of the weld's duplicate
+/// search; the face edges of topology and repair are placed the same way, without a copy).
 
 #include <algorithm>
 #include <cstddef>
