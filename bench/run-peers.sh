@@ -51,7 +51,8 @@ print("%.3f %.3f %.3f" % (statistics.median(a / b for a, b in pairs), statistics
 }
 
 cgal_flags=(-O3 -DNDEBUG -DCGAL_EIGEN3_ENABLED -I/usr/include/eigen3 -std=c++17 -Wno-maybe-uninitialized -lgmp -lmpfr)
-gh_peer= remesh_peer=
+gh_peer=''
+remesh_peer=''
 if [[ $only == *" simplify "* || $only == *" enhance "* ]]; then
   if [ -f /usr/include/CGAL/Surface_mesh.h ]; then
     echo "compiling the CGAL peers (about a minute)..." >&2
