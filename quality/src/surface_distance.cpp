@@ -18,7 +18,7 @@ double triangle_area(const SoupView& s, const Triangle& t) {
   return 0.5 * (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]).norm();
 }
 
-Vec3 barycentric_point(const TriangleSoup& s, const Triangle& t, double w1, double w2) {
+Vec3 barycentric_point(const SoupView& s, const Triangle& t, double w1, double w2) {
   return (1 - w1 - w2) * s.points[t[0]] + w1 * s.points[t[1]] + w2 * s.points[t[2]];
 }
 
@@ -31,7 +31,7 @@ std::vector<double> distances_to(const TriangleBvh& bvh, const std::vector<Vec3>
   return d;
 }
 
-DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, const DistanceParams& params,
+DirectedDistance one_direction(const SoupView& from, const TriangleBvh& to, const DistanceParams& params,
                                unsigned seed) {
   // 1. Area-weighted stratified random samples: face i gets floor(N A_i / A + u) points.
   const std::size_t n_faces = from.triangles.size();
@@ -103,14 +103,15 @@ DirectedDistance one_direction(const TriangleSoup& from, const TriangleBvh& to, 
 }
 
 // The soup without zero-area triangles (they carry no surface and would attract no samples),
-// moved by -shift.
-TriangleSoup without_degenerate(const SoupView& s, const Vec3& shift) {
-  TriangleSoup out;
-  out.points.reserve(s.points.size());
-  for (std::size_t v = 0; v < s.points.size(); ++v) out.points.push_back(s.points[v] - shift);
+// moved by -shift: the soup itself where that changes nothing, else a copy kept in `copy`.
+SoupView without_degenerate(const SoupView& s, const Vec3& shift, TriangleSoup& copy) {
+  const auto has_area = [&](const Triangle& t) { return triangle_area(s, t) > 0; };
+  if (shift.isZero() && std::all_of(s.triangles.begin(), s.triangles.end(), has_area)) return s;
+  copy.points.reserve(s.points.size());
+  for (std::size_t v = 0; v < s.points.size(); ++v) copy.points.push_back(s.points[v] - shift);
   for (const Triangle& t : s.triangles)
-    if (triangle_area(s, t) > 0) out.triangles.push_back(t);
-  return out;
+    if (has_area(t)) copy.triangles.push_back(t);
+  return copy;
 }
 
 }  // namespace
@@ -120,7 +121,8 @@ double SurfaceDistance::rms() const { return std::sqrt(0.5 * (a_to_b.rms * a_to_
 SurfaceDistance surface_distance(const SoupView& a, const SoupView& b, const DistanceParams& params) {
   // Far from the origin, point-triangle distances are measured next to it (origin_shift.h).
   const Vec3 shift = origin_shift(a.points);
-  const TriangleSoup sa = without_degenerate(a, shift), sb = without_degenerate(b, shift);
+  TriangleSoup copy_a, copy_b;
+  const SoupView sa = without_degenerate(a, shift, copy_a), sb = without_degenerate(b, shift, copy_b);
   if (sa.triangles.empty() || sb.triangles.empty())
     throw InvalidInput("surface distance: a surface has no triangle of positive area");
   const TriangleBvh bvh_a(sa), bvh_b(sb);

@@ -40,6 +40,17 @@ Corners common_corners(const Corners& a, const Corners& b, std::uint32_t none) {
   return both;
 }
 
+// The float nearest to x on the side of `towards` (-inf or +inf) that is not past x: x itself if
+// it is a float. Beyond the float range, the largest float (a lower bound of a larger x) or the
+// infinity on that side.
+float rounded_outwards(double x, float towards) {
+  constexpr double kLargest = std::numeric_limits<float>::max();
+  if (x > kLargest) return towards > 0 ? towards : std::numeric_limits<float>::max();
+  if (x < -kLargest) return towards < 0 ? towards : -std::numeric_limits<float>::max();
+  const float f = static_cast<float>(x);  // (NaN stays NaN)
+  return (towards < 0 ? f > x : f < x) ? std::nextafter(f, towards) : f;
+}
+
 bool triangles_share_a_corner(const Triangle& a, const Triangle& b) {
   for (auto u : a)
     for (auto v : b)
@@ -92,14 +103,57 @@ Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return a + std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) * ab;
 }
 
+TriangleBvh::FloatBox TriangleBvh::FloatBox::around(const Box3& box) {
+  constexpr float kInfinity = std::numeric_limits<float>::infinity();
+  FloatBox out;
+  for (int k = 0; k < 3; ++k) {
+    out.min[k] = rounded_outwards(box.min()[k], -kInfinity);
+    out.max[k] = rounded_outwards(box.max()[k], kInfinity);
+  }
+  return out;
+}
+
+TriangleBvh::FloatBox TriangleBvh::FloatBox::merged(const FloatBox& other) const {
+  FloatBox out;
+  for (int k = 0; k < 3; ++k) {
+    out.min[k] = std::min(min[k], other.min[k]);
+    out.max[k] = std::max(max[k], other.max[k]);
+  }
+  return out;
+}
+
+Box3 TriangleBvh::FloatBox::widened() const {
+  return Box3(Vec3(min[0], min[1], min[2]), Vec3(max[0], max[1], max[2]));
+}
+
+bool TriangleBvh::FloatBox::intersects(const FloatBox& other) const {
+  for (int k = 0; k < 3; ++k)
+    if (!(min[k] <= other.max[k] && other.min[k] <= max[k])) return false;
+  return true;
+}
+
+// As Eigen's AlignedBox::squaredExteriorDistance.
+double TriangleBvh::FloatBox::squared_exterior_distance(const Vec3& p) const {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double low = min[k], high = max[k];
+    if (low > p[k]) sum += (low - p[k]) * (low - p[k]);
+    else if (p[k] > high) sum += (p[k] - high) * (p[k] - high);
+  }
+  return sum;
+}
+
 TriangleBvh::TriangleBvh(const SoupView& soup) : soup_(soup) {
+  static_assert(sizeof(Node) == 44, "a node is 11 words: see triangle_bvh.h");
   const auto n = static_cast<std::uint32_t>(soup.triangles.size());
   boxes_.resize(n);
   std::vector<Vec3> centroids(n);
   tbb::parallel_for(std::uint32_t(0), n, [&](std::uint32_t f) {
-    boxes_[f].setEmpty();
-    for (auto v : soup.triangles[f]) boxes_[f].extend(soup.points[v]);
-    centroids[f] = boxes_[f].center();
+    Box3 box;
+    box.setEmpty();
+    for (auto v : soup.triangles[f]) box.extend(soup.points[v]);
+    boxes_[f] = FloatBox::around(box);
+    centroids[f] = box.center();
   });
   order_.resize(n);
   for (std::uint32_t f = 0; f < n; ++f) order_[f] = f;
@@ -115,13 +169,13 @@ std::uint32_t TriangleBvh::build(std::uint32_t index, std::uint32_t begin, std::
                                  const std::vector<Vec3>& centroids, int depth) {
   Node& node = nodes_[index];
   if (end - begin <= kLeafSize) {
-    node.box.setEmpty();
+    node.box = boxes_[order_[begin]];
     node.common = sorted_corners(soup_.triangles[order_[begin]], kNoCorner);
     for (std::uint32_t i = begin; i < end; ++i) {
-      node.box.extend(boxes_[order_[i]]);
+      node.box = node.box.merged(boxes_[order_[i]]);
       node.common = common_corners(node.common, sorted_corners(soup_.triangles[order_[i]], kNoCorner), kNoCorner);
     }
-    node.first = begin;
+    node.first_or_right = begin;
     node.count = end - begin;
     return index + 1;
   }
@@ -133,19 +187,20 @@ std::uint32_t TriangleBvh::build(std::uint32_t index, std::uint32_t begin, std::
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                    [&](std::uint32_t x, std::uint32_t y) { return centroids[x][axis] < centroids[y][axis]; });
-  node.left = index + 1;
-  std::uint32_t next = 0;
+  const std::uint32_t left = index + 1;
+  std::uint32_t right = 0, next = 0;
   if (depth < kParallelBuildDepth) {
-    node.right = node.left + subtree_nodes(mid - begin);
-    next = node.right + subtree_nodes(end - mid);
-    tbb::parallel_invoke([&] { build(node.left, begin, mid, centroids, depth + 1); },
-                         [&] { build(node.right, mid, end, centroids, depth + 1); });
+    right = left + subtree_nodes(mid - begin);
+    next = right + subtree_nodes(end - mid);
+    tbb::parallel_invoke([&] { build(left, begin, mid, centroids, depth + 1); },
+                         [&] { build(right, mid, end, centroids, depth + 1); });
   } else {
-    node.right = build(node.left, begin, mid, centroids, depth + 1);
-    next = build(node.right, mid, end, centroids, depth + 1);
+    right = build(left, begin, mid, centroids, depth + 1);
+    next = build(right, mid, end, centroids, depth + 1);
   }
-  node.box = nodes_[node.left].box.merged(nodes_[node.right].box);
-  node.common = common_corners(nodes_[node.left].common, nodes_[node.right].common, kNoCorner);
+  node.first_or_right = right;
+  node.box = nodes_[left].box.merged(nodes_[right].box);
+  node.common = common_corners(nodes_[left].common, nodes_[right].common, kNoCorner);
   return next;
 }
 
@@ -168,7 +223,7 @@ TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
     if (beyond_best(waiting.squared_distance)) continue;  // the best has come closer since it was queued
     const Node& node = nodes_[waiting.node];
     if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+      for (std::uint32_t i = node.first_or_right; i < node.first_or_right + node.count; ++i) {
         const Triangle& t = soup_.triangles[order_[i]];
         const Vec3 q = closest_point_on_triangle(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
         const double d2 = (q - p).squaredNorm();
@@ -180,8 +235,9 @@ TriangleBvh::Hit TriangleBvh::closest_point(const Vec3& p) const {
     }
     // Visit the nearer child first (pushed last) so that the bound shrinks early; a child already
     // beyond the best is not queued.
-    const Waiting left{node.left, nodes_[node.left].box.squaredExteriorDistance(p)};
-    const Waiting right{node.right, nodes_[node.right].box.squaredExteriorDistance(p)};
+    const std::uint32_t left_child = waiting.node + 1, right_child = node.first_or_right;
+    const Waiting left{left_child, nodes_[left_child].box.squared_exterior_distance(p)};
+    const Waiting right{right_child, nodes_[right_child].box.squared_exterior_distance(p)};
     const bool left_first = left.squared_distance < right.squared_distance;
     for (const Waiting& child : {left_first ? right : left, left_first ? left : right})
       if (!beyond_best(child.squared_distance)) stack[top++] = child;
@@ -193,11 +249,12 @@ bool TriangleBvh::reaches_within(const Vec3& p, double squared_radius) const {
   if (nodes_.empty()) return false;
   std::uint32_t stack[kMaxDepth * 2];
   int top = 0;
-  if (nodes_[0].box.squaredExteriorDistance(p) <= squared_radius) stack[top++] = 0;
+  if (nodes_[0].box.squared_exterior_distance(p) <= squared_radius) stack[top++] = 0;
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
+    const std::uint32_t index = stack[--top];
+    const Node& node = nodes_[index];
     if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+      for (std::uint32_t i = node.first_or_right; i < node.first_or_right + node.count; ++i) {
         const Triangle& t = soup_.triangles[order_[i]];
         const Vec3 q = closest_point_on_triangle(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
         if ((q - p).squaredNorm() <= squared_radius) return true;
@@ -205,11 +262,12 @@ bool TriangleBvh::reaches_within(const Vec3& p, double squared_radius) const {
       continue;
     }
     // The nearer child is pushed last, so searched first.
-    const double left = nodes_[node.left].box.squaredExteriorDistance(p);
-    const double right = nodes_[node.right].box.squaredExteriorDistance(p);
+    const std::uint32_t left_child = index + 1, right_child = node.first_or_right;
+    const double left = nodes_[left_child].box.squared_exterior_distance(p);
+    const double right = nodes_[right_child].box.squared_exterior_distance(p);
     const bool left_first = left < right;
-    for (const auto& [child, distance] : {left_first ? std::pair(node.right, right) : std::pair(node.left, left),
-                                          left_first ? std::pair(node.left, left) : std::pair(node.right, right)})
+    for (const auto& [child, distance] : {left_first ? std::pair(right_child, right) : std::pair(left_child, left),
+                                          left_first ? std::pair(left_child, left) : std::pair(right_child, right)})
       if (distance <= squared_radius) stack[top++] = child;
   }
   return false;
@@ -255,10 +313,11 @@ TriangleBvh::RayHit TriangleBvh::first_hit(const Vec3& origin, const Vec3& direc
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!(ray_box(origin, inverse, node.box) < best.distance)) continue;
+    const std::uint32_t index = stack[--top];
+    const Node& node = nodes_[index];
+    if (!(ray_box(origin, inverse, node.box.widened()) < best.distance)) continue;
     if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+      for (std::uint32_t i = node.first_or_right; i < node.first_or_right + node.count; ++i) {
         if (order_[i] == skip_face) continue;
         const Triangle& t = soup_.triangles[order_[i]];
         const double d = ray_triangle(origin, direction, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
@@ -266,27 +325,29 @@ TriangleBvh::RayHit TriangleBvh::first_hit(const Vec3& origin, const Vec3& direc
       }
       continue;
     }
-    stack[top++] = node.left;
-    stack[top++] = node.right;
+    stack[top++] = index + 1;
+    stack[top++] = node.first_or_right;
   }
   return best;
 }
 
 void TriangleBvh::for_each_overlapping(const Box3& box, const std::function<void(std::size_t)>& visit) const {
   if (nodes_.empty()) return;
+  const FloatBox query = FloatBox::around(box);
   std::uint32_t stack[kMaxDepth * 2];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!node.box.intersects(box)) continue;
+    const std::uint32_t index = stack[--top];
+    const Node& node = nodes_[index];
+    if (!node.box.intersects(query)) continue;
     if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-        if (boxes_[order_[i]].intersects(box)) visit(order_[i]);
+      for (std::uint32_t i = node.first_or_right; i < node.first_or_right + node.count; ++i)
+        if (boxes_[order_[i]].intersects(query)) visit(order_[i]);
       continue;
     }
-    stack[top++] = node.left;
-    stack[top++] = node.right;
+    stack[top++] = index + 1;
+    stack[top++] = node.first_or_right;
   }
 }
 
@@ -316,29 +377,31 @@ void TriangleBvh::overlapping_pairs(std::uint32_t a, std::uint32_t b, int depth,
   };
   if (a == b) {
     if (x.count > 0) {
-      for (std::uint32_t i = x.first; i < x.first + x.count; ++i)
-        for (std::uint32_t j = i + 1; j < x.first + x.count; ++j) visit_if_apart(i, j);
+      for (std::uint32_t i = x.first_or_right; i < x.first_or_right + x.count; ++i)
+        for (std::uint32_t j = i + 1; j < x.first_or_right + x.count; ++j) visit_if_apart(i, j);
       return;
     }
-    both([&] { overlapping_pairs(x.left, x.left, depth + 1, visit); },
+    both([&] { overlapping_pairs(a + 1, a + 1, depth + 1, visit); },
          [&] {
-           overlapping_pairs(x.right, x.right, depth + 1, visit);
-           overlapping_pairs(x.left, x.right, depth + 1, visit);
+           overlapping_pairs(x.first_or_right, x.first_or_right, depth + 1, visit);
+           overlapping_pairs(a + 1, x.first_or_right, depth + 1, visit);
          });
     return;
   }
   if (!x.box.intersects(y.box)) return;
   if (x.count > 0 && y.count > 0) {
-    for (std::uint32_t i = x.first; i < x.first + x.count; ++i)
-      for (std::uint32_t j = y.first; j < y.first + y.count; ++j) visit_if_apart(i, j);
+    for (std::uint32_t i = x.first_or_right; i < x.first_or_right + x.count; ++i)
+      for (std::uint32_t j = y.first_or_right; j < y.first_or_right + y.count; ++j) visit_if_apart(i, j);
     return;
   }
   // Split the node that is not a leaf, the larger (by box volume) if neither is.
-  const bool split_x = y.count > 0 || (x.count == 0 && x.box.volume() >= y.box.volume());
+  const bool split_x = y.count > 0 || (x.count == 0 && x.box.widened().volume() >= y.box.widened().volume());
   if (split_x)
-    both([&] { overlapping_pairs(x.left, b, depth + 1, visit); }, [&] { overlapping_pairs(x.right, b, depth + 1, visit); });
+    both([&] { overlapping_pairs(a + 1, b, depth + 1, visit); },
+         [&] { overlapping_pairs(x.first_or_right, b, depth + 1, visit); });
   else
-    both([&] { overlapping_pairs(a, y.left, depth + 1, visit); }, [&] { overlapping_pairs(a, y.right, depth + 1, visit); });
+    both([&] { overlapping_pairs(a, b + 1, depth + 1, visit); },
+         [&] { overlapping_pairs(a, y.first_or_right, depth + 1, visit); });
 }
 
 }  // namespace meshprep

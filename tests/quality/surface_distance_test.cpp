@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace meshprep;
@@ -40,6 +41,50 @@ TEST(TriangleBvh, ReachesWithinAgreesWithTheClosestPoint) {
   }
   EXPECT_FALSE(bvh.reaches_within(Vec3(3, 0, 0), 3.9));  // the sphere's radius is 1: 2 from (3, 0, 0)
   EXPECT_TRUE(bvh.reaches_within(Vec3(3, 0, 0), 4.1));
+}
+
+// The hierarchy keeps its boxes in single precision, rounded outwards: a filter, never an answer.
+// Far from the origin (floats 1 apart at 1e7, where the sphere is 2e-3 wide: every box is as
+// wide as the whole surface) and beyond the float range (1e39), the closest points, the first
+// hits and the overlapping faces are still exactly those of a search over every triangle.
+TEST(TriangleBvh, CoarseBoxesStillGiveExactAnswers) {
+  for (const auto& [scale, offset] : {std::pair(1e-3, 1e7), std::pair(1e33, 1e39), std::pair(1.0, 0.0)}) {
+    TriangleSoup s = test::icosphere(2, scale);
+    for (Vec3& p : s.points) p += Vec3::Constant(offset);
+    const TriangleBvh bvh(s);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-2 * scale, 2 * scale);
+    for (int k = 0; k < 100; ++k) {
+      const Vec3 p = Vec3::Constant(offset) + Vec3(u(rng), u(rng), u(rng));
+      double best = INFINITY, nearest_hit = INFINITY;
+      const Vec3 direction = (Vec3::Constant(offset) - p).normalized();
+      std::vector<std::size_t> overlapping;
+      Box3 query(p);
+      query.extend(p + Vec3::Constant(0.5 * scale));
+      for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+        const Triangle& t = s.triangles[f];
+        const double d2 = (closest_point_on_triangle(p, s.points[t[0]], s.points[t[1]], s.points[t[2]]) - p).squaredNorm();
+        best = std::min(best, d2);
+        const double along = ray_triangle(p, direction, s.points[t[0]], s.points[t[1]], s.points[t[2]]);
+        nearest_hit = std::min(nearest_hit, along);
+        Box3 box;
+        box.setEmpty();
+        for (auto v : t) box.extend(s.points[v]);
+        if (box.intersects(query)) overlapping.push_back(f);
+      }
+      const TriangleBvh::Hit found = bvh.closest_point(p);
+      EXPECT_EQ(found.squared_distance, best);
+      const Triangle& at = s.triangles[found.face];
+      EXPECT_EQ((closest_point_on_triangle(p, s.points[at[0]], s.points[at[1]], s.points[at[2]]) - p).squaredNorm(), best);
+      const TriangleBvh::RayHit ray = bvh.first_hit(p, direction, s.triangles.size());
+      EXPECT_EQ(ray.distance, nearest_hit);
+      std::vector<std::size_t> listed;
+      bvh.for_each_overlapping(query, [&](std::size_t f) { listed.push_back(f); });
+      std::sort(listed.begin(), listed.end());
+      // A superset (the boxes are widened): every face the exact boxes overlap is listed.
+      EXPECT_TRUE(std::includes(listed.begin(), listed.end(), overlapping.begin(), overlapping.end()));
+    }
+  }
 }
 
 TEST(ClosestPointOnTriangle, Regions) {
