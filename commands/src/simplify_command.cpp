@@ -14,13 +14,12 @@ namespace meshprep {
 namespace {
 
 // Topology and self-intersections are the contract of a simplifier: report them for the input too.
-nlohmann::ordered_json input_facts(const TriangleSoup& soup) {
+nlohmann::ordered_json input_topology(const TriangleSoup& soup) {
   const Topology topology = analyze_topology(soup);
   nlohmann::ordered_json json;
   json["closed"] = topology.closed;
   json["manifold"] = topology.manifold;
   json["genus"] = topology.genus ? nlohmann::ordered_json(*topology.genus) : nlohmann::ordered_json(nullptr);
-  json["self_intersections"] = find_self_intersections(soup).count;
   return json;
 }
 
@@ -43,24 +42,28 @@ SimplifyOutcome simplify_command(LoadedMesh input, const SimplifyCommand& comman
   });
   add_taken_back_notes(result.taken_back, outcome.messages);
   outcome.surface = soup_from_mesh(input.mesh);
+  input.mesh.clear();  // (its arrays still had the input's size: 100 bytes a face)
 
-  // The output's report and the input's facts are independent: measured side by side.
-  nlohmann::ordered_json input_topology;
+  // The output's report and the input's topology are independent: measured side by side. The
+  // input's self-intersections come after: their search is parallel itself, and its hierarchy
+  // over the input would otherwise live beside the one the distance builds over it.
+  nlohmann::ordered_json input_facts;
   tbb::parallel_invoke([&] { outcome.quality = analyze_quality(outcome.surface, command.quality, &input.soup); },
-                       [&] { input_topology = input_facts(input.soup); });
+                       [&] { input_facts = input_topology(input.soup); });
+  input_facts["self_intersections"] = find_self_intersections(input.soup).count;
   QualityReport& quality = outcome.quality;
   quality.path = names.output;
   quality.reference->path = names.input;
   // The guards have kept every output measured free of new self-intersections, but they do not
   // test for them: the report does, and a surface that intersects itself is not handed on.
-  refuse_new_intersections(quality, input_topology["self_intersections"].get<std::size_t>(), names, "simplified",
+  refuse_new_intersections(quality, input_facts["self_intersections"].get<std::size_t>(), names, "simplified",
                            "Keep more faces (--ratio) or raise --min-angle", outcome.messages);
   nlohmann::ordered_json& json = outcome.report;
   json["cost"] = choice_name(collapse_costs(), params.cost);
   json["min_angle_deg"] = params.min_angle_deg;
   json["max_error"] = params.max_error;
   json.update(command.enhance ? to_json(enhanced) : to_json(result));
-  json["input_topology"] = input_topology;
+  json["input_topology"] = input_facts;
   json["quality"] = to_json(quality);
   if (!result.reached_target)
     outcome.messages.push_back(

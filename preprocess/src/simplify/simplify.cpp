@@ -43,15 +43,13 @@ constexpr int kPolishSweeps = 3;
 // Restarts with a tighter error cap where the output intersects itself (decimate_with_guards).
 constexpr int kRetries = 6;
 
-// Status flags for collapses and face normals for OpenMesh's decimater. Not the halfedges': no
-// one reads them, and every status() inside Debian's OpenMesh (built with its assertions on)
-// builds and compares a type name, two more of them per collapse and per loop removed.
+// Status flags for collapses. Not the halfedges': no one reads them, and every status() inside
+// Debian's OpenMesh (built with its assertions on) builds and compares a type name, two more of
+// them per collapse and per loop removed.
 void request_collapse_attributes(TriMesh& mesh) {
   mesh.request_vertex_status();
   mesh.request_edge_status();
   mesh.request_face_status();
-  mesh.request_face_normals();
-  mesh.update_face_normals();
 }
 
 std::size_t target_of(const TriMesh& mesh, const SimplifyParams& params) {
@@ -61,7 +59,11 @@ std::size_t target_of(const TriMesh& mesh, const SimplifyParams& params) {
 }
 
 // Garland & Heckbert 1997 quadrics as OpenMesh implements them; normal flips forbidden.
+// (Face normals for its normal-flip module only: our own collapses compute what they test, and
+// the normals were 24 bytes a face of the peak.)
 void decimate_quadric(TriMesh& mesh, std::size_t target) {
+  mesh.request_face_normals();
+  mesh.update_face_normals();
   using Decimater = OpenMesh::Decimater::DecimaterT<TriMesh>;
   Decimater decimater(mesh);
   OpenMesh::Decimater::ModQuadricT<TriMesh>::Handle quadric;
