@@ -53,19 +53,24 @@ constexpr double kCostBand = 1.2;
 constexpr int kBlockShift = 10;
 
 // Everything the queue keeps per edge, in one record: a collapse reads and writes it for a dozen
-// edges at scattered places of the mesh, one cache line each instead of one per array (at 1.2 M
-// faces the arrays did not fit in the cache), and exactly one. The heap holds a copy of each
-// queued edge's cost.
-struct alignas(64) EdgeRecord {
+// edges at scattered places of the mesh, one or two cache lines each instead of one per array (at
+// 1.2 M faces the arrays did not fit in the cache). The heap holds a copy of each queued edge's
+// cost. The quadric placement is not kept: it is computed again, from the same end points and
+// quadrics (their versions say they have not changed), for the one edge tried at a time (40 bytes
+// a record instead of 64: at 10 M faces the records were the largest array of the collapse).
+struct EdgeRecord {
   double cost = 0;
   double quadric_cost = 0;  // dQ / L^2 (or Q(p) / L^2 beside thin faces) at the edge's placement
   double shape = 0;         // Jhat, the dimensionless bending energy, as last computed
-  Vec3 placement = Vec3::Zero();
   // The versions of the end points (from, to) the placement and quadric cost were computed for.
   std::uint32_t from_version = 0, to_version = 0;
   unsigned char retries = 0;
   char complete = 0;  // 0: cost is a lower bound (quadric part only, or no placement yet)
+  // The end the placement was pinned to when computed (pinned_code): a neighbour's collapse can put
+  // an end on the boundary without changing its version, and the placement stays the one costed.
+  char pinned = 0;
 };
+static_assert(sizeof(EdgeRecord) == 40);
 
 // A collapse along a patch border drops a border vertex only where the border turns by at most
 // 1 degree there: a CAD part's straight edges simplify, its curved ones keep their vertices. A
@@ -81,6 +86,7 @@ class Collapser {
       : mesh_(mesh), params_(params), scales_(scales), quadrics_(quadrics), error_cap_(error_cap),
         merged_into_(merged_into), result_(result), field_(field), patches_(mesh),
         edges_(mesh.n_edges()),
+        distance_placements_(params.cost == CollapseCost::Distance ? mesh.n_edges() : 0),
         locked_(mesh.n_vertices(), 0),
         version_(mesh.n_vertices()),
         whole_error_(mesh.n_vertices(), 0),
@@ -209,14 +215,15 @@ class Collapser {
       ++result_.rejected_topology;
       return Outcome::Topology;
     }
-    const Vec3 p = edges_[idx(e)].placement;
+    const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
+    Quadric merged = quadrics_[idx(kept)];
+    merged += quadrics_[idx(removed)];
+    const Vec3 p = params_.cost == CollapseCost::Distance ? distance_placements_[idx(e)]
+                                                          : quadric_placement(e, merged, edges_[idx(e)].pinned);
     if (!collapse_keeps_shape(mesh_, h, p, min_angle_cosine_, field_)) {
       ++result_.rejected_shape;
       return Outcome::Shape;
     }
-    const VertexHandle removed = mesh_.from_vertex_handle(h), kept = mesh_.to_vertex_handle(h);
-    Quadric merged = quadrics_[idx(kept)];
-    merged += quadrics_[idx(removed)];
     double limit = std::min(error_cap_[idx(kept)], error_cap_[idx(removed)]);
     if (params_.max_error > 0) limit = std::min(limit, params_.max_error * scales_.diagonal);
     if (rms_plane_distance(merged, p) > limit) {
@@ -330,26 +337,39 @@ class Collapser {
     record.to_version = version_[idx(b)];
     Quadric q = quadrics_[idx(a)];
     q += quadrics_[idx(b)];
-    const VertexHandle pinned = pinned_end(a, b);
-    Vec3 p;
-    if (pinned.is_valid()) {
-      p = point(pinned);
-    } else {
-      const Vec3 middle = 0.5 * (pa + pb);
-      p = minimiser_near(q, middle);
-      if (!((p - middle).norm() <= kFarPlacement * length)) {
-        p = middle;
-        for (const Vec3& end : {pa, pb})
-          if (evaluate(q, end) < evaluate(q, p)) p = end;
-      }
-    }
-    record.placement = p;
+    record.pinned = pinned_code(a, b);
+    const Vec3 p = quadric_placement(e, q, record.pinned);
     double error = evaluate(q, p);
     if (!whole_error_[idx(a)] && !whole_error_[idx(b)])
       error = std::max(0.0, error - evaluate(quadrics_[idx(a)], pa) - evaluate(quadrics_[idx(b)], pb));
     record.quadric_cost = error / (scales_.edge_length * scales_.edge_length);
     record.cost = bending_cost(record, length);
     return true;
+  }
+
+  // pinned_end(a, b) of halfedge 0's ends a -> b: 0 neither, 1 a, 2 b.
+  char pinned_code(VertexHandle a, VertexHandle b) const {
+    const VertexHandle pinned = pinned_end(a, b);
+    return !pinned.is_valid() ? 0 : pinned == a ? 1 : 2;
+  }
+
+  // Where edge e collapses to under the cost of Bending, `q` the sum of its end points' quadrics:
+  // the pinned end (pinned_code), else the quadric's minimiser near the midpoint, else (too far)
+  // the best of the midpoint and the end points. (Floating-point sums commute: the sum in either
+  // order is the same q.)
+  Vec3 quadric_placement(EdgeHandle e, const Quadric& q, char pinned) const {
+    const HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
+    const VertexHandle a = mesh_.from_vertex_handle(h), b = mesh_.to_vertex_handle(h);
+    if (pinned) return point(pinned == 1 ? a : b);
+    const Vec3 pa = point(a), pb = point(b);
+    const Vec3 middle = 0.5 * (pa + pb);
+    Vec3 p = minimiser_near(q, middle);
+    if (!((p - middle).norm() <= kFarPlacement * (pb - pa).norm())) {
+      p = middle;
+      for (const Vec3& end : {pa, pb})
+        if (evaluate(q, end) < evaluate(q, p)) p = end;
+    }
+    return p;
   }
 
   // Bending: the lower bound times the bending-energy shape factor. Distance: the placement.
@@ -360,7 +380,7 @@ class Collapser {
     EdgeRecord& record = edges_[idx(e)];
     ++result_.energy_evaluations;
     if (params_.cost == CollapseCost::Distance) {
-      record.placement = distance_placement(a, b, length);
+      distance_placements_[idx(e)] = distance_placement(a, b, length);
       return record.cost;
     }
     const EdgeEnergy energy = edge_energy(rings_, a, b, nullptr);
@@ -415,6 +435,7 @@ class Collapser {
   const HeightField field_;
   const FacePatches patches_;
   std::vector<EdgeRecord> edges_;
+  std::vector<Vec3> distance_placements_;  // per edge, for CollapseCost::Distance only (its RBF placement costs)
   std::vector<char> locked_;  // non-manifold vertices: never moved
   // Changes each time a vertex moves or merges (unique over all vertices and times: never 0).
   std::vector<std::uint32_t> version_;
