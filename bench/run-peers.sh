@@ -11,10 +11,11 @@
 #     ENHANCE_LARGE=1: about 4 minutes a run), --threads 2 against --threads 1, wall time of the
 #     whole process;
 #  4. memory: peak resident memory per input face of `simplify --ratio 0.01` and `quality` on
-#     bunny00 subdivided LEVEL times (default 2; 3 gives 4.8 M faces), with 2 threads.
+#     bunny00 Loop-subdivided LEVEL times (default 2: 1.2 M faces; 3 gives 4.8 M), then SQRT3
+#     times by sqrt(3) (default 0; LEVEL=2 SQRT3=2 gives issue 50's 10 M: 10.9 M faces), with 2 threads.
 # The CGAL peers are compiled here when libcgal-dev is installed (sections 1 and 2 are skipped
 # otherwise). Writes the tables to OUT (default ./peers.md) and prints them.
-# Usage: [RUNS=5] [ONLY="simplify enhance threads memory"] [LEVEL=2] [PARTS=N] [ENHANCE_LARGE=1]
+# Usage: [RUNS=5] [ONLY="simplify enhance threads memory"] [LEVEL=2] [SQRT3=0] [PARTS=N] [ENHANCE_LARGE=1]
 #        bench/run-peers.sh [build-dir] [OUT]
 # About 35 minutes in full with RUNS=5 on a 2-core machine (the threads section is half of it).
 # shellcheck source-path=SCRIPTDIR
@@ -23,6 +24,7 @@ out=$(realpath -m "${2:-peers.md}")
 runs=${RUNS:-5}
 only=" ${ONLY:-simplify enhance threads memory} "
 level=${LEVEL:-2}
+sqrt3=${SQRT3:-0}
 meshes=$root/../shared/data/meshes
 cad=$root/../shared/data/cad
 : > "$out"
@@ -104,10 +106,11 @@ if [[ $only == *" enhance "* && -n $remesh_peer ]]; then
 print("%.2f" % statistics.median(float(l) for l in open(sys.argv[1])))' "$work/enhance_ratios.txt")** |"
 fi
 
-large=$work/bunny_l$level.off
+large=$work/bunny_l${level}_s$sqrt3.off
 if [[ $only == *" threads "* || $only == *" memory "* ]]; then
   "$build/bin/subdivide_mesh" "$meshes/bunny00.off" "$work/bunny_l2.off" 2
-  [ "$level" = 2 ] || "$build/bin/subdivide_mesh" "$meshes/bunny00.off" "$large" "$level"
+  [ "$level$sqrt3" = 20 ] || "$build/bin/subdivide_mesh" "$meshes/bunny00.off" "$large" "$level" "$sqrt3"
+  [ "$level$sqrt3" != 20 ] || large=$work/bunny_l2.off
 fi
 
 if [[ $only == *" threads "* ]]; then
