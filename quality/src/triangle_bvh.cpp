@@ -126,23 +126,6 @@ Box3 TriangleBvh::FloatBox::widened() const {
   return Box3(Vec3(min[0], min[1], min[2]), Vec3(max[0], max[1], max[2]));
 }
 
-bool TriangleBvh::FloatBox::intersects(const FloatBox& other) const {
-  for (int k = 0; k < 3; ++k)
-    if (!(min[k] <= other.max[k] && other.min[k] <= max[k])) return false;
-  return true;
-}
-
-// As Eigen's AlignedBox::squaredExteriorDistance.
-double TriangleBvh::FloatBox::squared_exterior_distance(const Vec3& p) const {
-  double sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double low = min[k], high = max[k];
-    if (low > p[k]) sum += (low - p[k]) * (low - p[k]);
-    else if (p[k] > high) sum += (p[k] - high) * (p[k] - high);
-  }
-  return sum;
-}
-
 TriangleBvh::TriangleBvh(const SoupView& soup) : soup_(soup) {
   static_assert(sizeof(Node) == 44, "a node is 11 words: see triangle_bvh.h");
   const auto n = static_cast<std::uint32_t>(soup.triangles.size());

@@ -83,8 +83,22 @@ class TriangleBvh {
     static FloatBox around(const Box3& box);
     FloatBox merged(const FloatBox& other) const;
     Box3 widened() const;  ///< as doubles (exact)
-    bool intersects(const FloatBox& other) const;
-    double squared_exterior_distance(const Vec3& p) const;
+    // (Inline: the closest-point search calls this twice a node.)
+    bool intersects(const FloatBox& other) const {
+      for (int k = 0; k < 3; ++k)
+        if (!(min[k] <= other.max[k] && other.min[k] <= max[k])) return false;
+      return true;
+    }
+    /// As Eigen's AlignedBox::squaredExteriorDistance.
+    double squared_exterior_distance(const Vec3& p) const {
+      double sum = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double low = min[k], high = max[k];
+        if (low > p[k]) sum += (low - p[k]) * (low - p[k]);
+        else if (p[k] > high) sum += (p[k] - high) * (p[k] - high);
+      }
+      return sum;
+    }
   };
   /// 44 bytes. An inner node's left child is the next node (the nodes are in preorder).
   struct Node {
