@@ -36,7 +36,8 @@ nlohmann::ordered_json to_json(const EnhanceResult& result, const EnhanceParams&
                     {"sizing_shortest", result.sizing_shortest},
                     {"sizing_base", result.sizing_base},
                     {"sizing_faces", result.sizing_faces},
-                    {"sizing_capped", result.sizing_capped}};
+                    {"sizing_capped", result.sizing_capped},
+                    {"seconds", result.remesh_seconds}};
   json["parameters"] = {{"max_deviation", result.max_deviation},
                         {"max_deviation_auto", !params.max_deviation},
                         {"target_min_angle_deg", params.target_min_angle_deg},

@@ -110,6 +110,9 @@ struct EnhanceResult {
   std::size_t input_self_intersections = 0;  ///< intersecting face pairs of the input (the guards allow no more)
   bool remeshed = false;                ///< the remeshing ran (and was kept)
   std::size_t remesh_splits = 0, remesh_collapses = 0, remesh_flips = 0;
+  /// Seconds the remeshing took, its runs again included (kept or taken back); `seconds` holds it
+  /// too: the rest is the rounds and the settling fit.
+  double remesh_seconds = 0;
   /// Times the remeshing crossed itself and was run again, finer where it crossed (kept or not).
   std::size_t remesh_crossing_refinements = 0;
   /// The sizing field, relative to the reference's diagonal: its shortest length, and its base
