@@ -308,11 +308,13 @@ EnhanceResult enhance(TriMesh& mesh, const TriangleSoup* reference, const Enhanc
     if (params.progress) params.progress(0.0);
     return out_of_time();
   };
-  const auto remesh_start = std::chrono::steady_clock::now();
-  if (remeshing && !remesh(mesh, *features, params, max_deviation, diagonal, near_origin.shift(), allowed_intersections,
-                           remeshing_out_of_time, result))
-    features.emplace(mesh, surface, params.feature_angle_deg, false);
-  if (remeshing) result.remesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - remesh_start).count();
+  if (remeshing) {
+    const auto remesh_start = std::chrono::steady_clock::now();
+    const bool kept = remesh(mesh, *features, params, max_deviation, diagonal, near_origin.shift(), allowed_intersections,
+                             remeshing_out_of_time, result);
+    result.remesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - remesh_start).count();
+    if (!kept) features.emplace(mesh, surface, params.feature_angle_deg, false);
+  }
   detail::SurfaceConstraints& constraints = *features;
   for (const auto v : mesh.vertices()) {
     if (constraints.role(v) == detail::VertexRole::Line) ++result.line_vertices;
